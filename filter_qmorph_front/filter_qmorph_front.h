@@ -1,0 +1,39 @@
+// MeshLab 2020.09 filter plugin: closed triangle mesh -> feature-aligned quad-dominant mesh.
+// A thin adapter over the vcg_ext core: parameters, preconditions, progress, log and errors.
+#ifndef FILTER_QMORPH_FRONT_H
+#define FILTER_QMORPH_FRONT_H
+
+#include <common/interfaces.h>
+
+class QMorphFrontPlugin : public QObject, public MeshFilterInterface
+{
+    Q_OBJECT
+    MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
+    Q_INTERFACES(MeshFilterInterface)
+
+public:
+    enum {
+        FP_VSA_SEGMENT,
+    };
+
+    QMorphFrontPlugin();
+
+    QString pluginName() const override { return "FilterQMorphFront"; }
+    QString filterName(FilterIDType filter) const override;
+    QString filterInfo(FilterIDType filter) const override;
+    FilterClass getClass(QAction *a) override;
+    FILTER_ARITY filterArity(QAction *a) const override;
+    int getPreConditions(QAction *a) const override;
+    int postCondition(QAction *a) const override;
+    void initParameterSet(QAction *a, MeshModel &m, RichParameterList &par) override;
+    bool applyFilter(QAction *a, MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb) override;
+
+private:
+    // Sets errorMessage and writes the same text to the log (meshlabserver prints only the log).
+    bool fail(const QString &filter, const QString &why);
+
+    void initVsaParameters(MeshModel &m, RichParameterList &par);
+    bool applyVsa(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb);
+};
+
+#endif

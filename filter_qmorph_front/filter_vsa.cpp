@@ -1,0 +1,76 @@
+// Filter 1: Segment by Variational Shape Approximation.
+#include "filter_qmorph_front.h"
+
+#include <vcg_ext/mesh_checks.h>
+#include <vcg_ext/region_ids.h>
+#include <vcg_ext/vsa_segmentation.h>
+
+typedef vcg_ext::VSASegmentation<CMeshO> VSA;
+
+void QMorphFrontPlugin::initVsaParameters(MeshModel &, RichParameterList &par)
+{
+    VSA::Params d;
+    par.addParam(RichEnum("SeedingMode", d.mode,
+                          QStringList() << "Split regions above the threshold angle" << "Fixed region count",
+                          "Seeding mode",
+                          "How regions are seeded. <i>Split regions above the threshold angle</i> (the paper): start from "
+                          "the initial seeds and add a seed in every region whose faces deviate from the region's proxy "
+                          "normal by more than the threshold angle, until none does or <i>Max regions</i> is reached. "
+                          "<i>Fixed region count</i>: exactly <i>Max regions</i> regions, adding one seed at a time in the "
+                          "region of largest L2,1 error (incremental seeding, as CGAL does)."));
+    par.addParam(RichInt("InitialSeeds", d.initialSeeds, "Initial seeds",
+                         "Number of random seed faces to start from (the paper uses 2). Every connected component "
+                         "also gets a seed of its own."));
+    par.addParam(RichFloat("ThresholdAngle", float(d.thresholdAngleDeg), "Threshold angle (deg)",
+                           "A region whose faces deviate from its proxy normal by more than this angle gets an extra "
+                           "seed (the paper: 60 degrees = pi/3). Must be in (0, 180)."));
+    par.addParam(RichInt("MaxRegions", d.maxRegions, "Max regions",
+                         "Threshold mode: the largest number of regions seeding may reach. Fixed mode: the number of "
+                         "regions to make. At least 1."));
+    par.addParam(RichInt("MaxIterations", d.maxIterations, "Max iterations",
+                         "Cap on the Lloyd iterations (flooding + proxy fitting) after each (re)seeding. They stop "
+                         "earlier when the L2,1 error drops by less than 0.01%. At least 1."));
+    par.addParam(RichInt("RandomSeed", int(d.randomSeed), "Random seed",
+                         "Seed of the random choice of the initial seed faces: the same seed gives the same regions."));
+    par.addParam(RichBool("ColorByRegion", true, "Colour faces by region",
+                          "Write a distinct face colour per region (the region id always goes to the face quality)."));
+}
+
+bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb)
+{
+    const QString name = filterName(FP_VSA_SEGMENT);
+    MeshModel &mm = *md.mm();
+
+    VSA::Params p;
+    p.mode = VSA::SeedingMode(par.getEnum("SeedingMode"));
+    p.initialSeeds = par.getInt("InitialSeeds");
+    p.thresholdAngleDeg = par.getFloat("ThresholdAngle");
+    p.maxRegions = par.getInt("MaxRegions");
+    p.maxIterations = par.getInt("MaxIterations");
+    p.randomSeed = uint32_t(par.getInt("RandomSeed"));
+    if (p.mode != VSA::ThresholdSeeding && p.mode != VSA::FixedRegionCount)
+        return fail(name, "unknown seeding mode");
+    std::string bad = p.Validate();
+    if (!bad.empty()) return fail(name, QString::fromStdString(bad));
+
+    vcg_ext::MeshCheckReport report = vcg_ext::MeshChecks<CMeshO>::Inspect(mm.cm, false);
+    if (report.faces == 0 || report.nonFiniteVertices)
+        return fail(name, QString::fromStdString(report.FirstProblem(false)));
+
+    // Checks passed: from here on the mesh may change.
+    mm.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_FACEQUALITY);
+    VSA::Result r = VSA::Segment(mm.cm, p, cb);
+    if (!r.error.empty()) return fail(name, QString::fromStdString(r.error));
+    if (par.getBool("ColorByRegion")) {
+        mm.updateDataMask(MeshModel::MM_FACECOLOR);
+        vcg_ext::RegionIds<CMeshO>::ColorFaces(mm.cm, r.faceRegion);
+    }
+    if (p.mode == VSA::FixedRegionCount && r.regions != p.maxRegions)
+        Log("VSA: %d regions instead of %d (the mesh has %d faces and %d connected components)", r.regions,
+            p.maxRegions, mm.cm.fn, r.components);
+    Log("VSA: %d regions on %d faces (%d components), L2,1 error %.6g, max normal deviation %.1f deg, "
+        "%d Lloyd iterations in %d seeding rounds, %.3f s",
+        r.regions, mm.cm.fn, r.components, r.l21Error, r.maxDeviationDeg, r.lloydIterations, r.seedingRounds,
+        r.seconds);
+    return true;
+}

@@ -1,0 +1,362 @@
+// Variational Shape Approximation with the L2,1 metric (Cohen-Steiner, Alliez, Desbrun 2004):
+// partitions a triangle mesh into near-planar, edge-connected regions.
+//
+//   E(t, P) = |t| * |n_t - N_P|^2          (area times squared normal deviation)
+//
+// Lloyd iterations alternate (1) flooding from one seed per region with one global priority
+// queue keyed by E(face, proxy of the region that reaches it) and (2) fitting each proxy normal
+// as the normalised area-weighted normal sum of its region. Seeding, as the seed paper does it:
+// a few random seeds, then an extra seed (the face of largest error) in every region whose
+// largest face-normal deviation from its proxy exceeds a threshold angle; or a fixed region count
+// reached by incremental seeding in the region of largest error (as CGAL's VSA does).
+//
+// Needs face-face adjacency (computed here) and per-face quality for the output labels.
+#ifndef VCG_EXT_VSA_SEGMENTATION_H
+#define VCG_EXT_VSA_SEGMENTATION_H
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+namespace vcg_ext {
+
+template <class MeshType>
+class VSASegmentation
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef vcg::Point3<double> Vec;
+
+    enum SeedingMode {
+        ThresholdSeeding = 0,  // random seeds, then split regions deviating more than the threshold
+        FixedRegionCount = 1   // exactly maxRegions regions, incremental seeding at the worst region
+    };
+
+    struct Params {
+        SeedingMode mode = ThresholdSeeding;
+        int initialSeeds = 2;             // random seeds to start from (>= 1)
+        double thresholdAngleDeg = 60.0;  // max normal deviation inside a region (0 < a < 180)
+        int maxRegions = 200;             // cap (threshold mode) or exact count (fixed mode), >= 1
+        int maxIterations = 30;           // cap on Lloyd iterations after each (re)seeding, >= 1
+        double relativeTolerance = 1e-4;  // Lloyd stops when the error drops by less than this fraction
+        uint32_t randomSeed = 0;          // same seed, same result
+        int relaxationsPerSeed = 5;       // fixed mode: Lloyd iterations after each added seed
+
+        // Empty when valid, else what is wrong.
+        std::string Validate() const
+        {
+            if (initialSeeds < 1) return "initial seeds must be at least 1";
+            if (!(thresholdAngleDeg > 0.0 && thresholdAngleDeg < 180.0)) return "the threshold angle must be in (0, 180) degrees";
+            if (maxRegions < 1) return "max regions must be at least 1";
+            if (maxIterations < 1) return "max iterations must be at least 1";
+            if (!(relativeTolerance >= 0.0)) return "the relative tolerance must be >= 0";
+            return "";
+        }
+    };
+
+    struct Result {
+        std::string error;             // empty on success
+        std::vector<int> faceRegion;   // per face index (tri::Index), -1 for deleted faces
+        std::vector<int> seedFace;     // per region: the face its last flooding started from
+        std::vector<Vec> proxyNormal;  // per region
+        int regions = 0;
+        int components = 0;
+        int lloydIterations = 0;       // in total, over all seeding rounds
+        int seedingRounds = 0;
+        double l21Error = 0;           // total L2,1 error of the final partition
+        double maxDeviationDeg = 0;    // largest face-normal / proxy angle over all regions
+        double seconds = 0;
+    };
+
+    // Segments `m`; on success writes region ids to face quality (when the mesh has it).
+    static Result Segment(MeshType &m, const Params &p, vcg::CallBackPos *cb = nullptr)
+    {
+        auto t0 = std::chrono::steady_clock::now();
+        Result res;
+        res.error = p.Validate();
+        if (!res.error.empty()) return res;
+        if (m.fn == 0) { res.error = "the mesh has no faces"; return res; }
+        vcg::tri::RequireFFAdjacency(m);
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+
+        VSASegmentation s(m, p, cb);
+        s.Run(res);
+
+        if (vcg::tri::HasPerFaceQuality(m))
+            for (FaceType &f : m.face)
+                if (!f.IsD()) f.Q() = typename MeshType::ScalarType(res.faceRegion[vcg::tri::Index(m, f)]);
+        res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return res;
+    }
+
+    // L2,1 error of a labelling against the given proxy normals (for tests and reports).
+    static double L21Error(MeshType &m, const std::vector<int> &faceRegion, const std::vector<Vec> &proxy)
+    {
+        double e = 0;
+        for (FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            Vec n; double a;
+            AreaNormal(f, a, n);
+            e += a * (n - proxy[faceRegion[vcg::tri::Index(m, f)]]).SquaredNorm();
+        }
+        return e;
+    }
+
+    static void AreaNormal(const FaceType &f, double &area, Vec &normal)
+    {
+        Vec a = Vec::Construct(f.cV(0)->cP()), b = Vec::Construct(f.cV(1)->cP()), c = Vec::Construct(f.cV(2)->cP());
+        Vec cr = (b - a) ^ (c - a);
+        double len = cr.Norm();
+        area = 0.5 * len;
+        normal = (len > 0 && std::isfinite(len)) ? cr / len : Vec(0, 0, 0);  // zero-area: no normal, no error
+        if (!std::isfinite(area)) area = 0;
+    }
+
+private:
+    struct QueueItem {
+        double error;
+        int face;
+        int region;
+        bool operator<(const QueueItem &o) const  // min-heap on error, ties by face index
+        {
+            return error != o.error ? error > o.error : face > o.face;
+        }
+    };
+
+    MeshType &m;
+    const Params &p;
+    vcg::CallBackPos *cb;
+    int n;                          // face vector size (deleted faces included, never labelled)
+    std::vector<double> area;
+    std::vector<Vec> normal;
+    std::vector<int> label;         // region per face
+    std::vector<int> seeds;         // seed face per region
+    std::vector<Vec> proxy;         // proxy normal per region
+    std::vector<std::array<int, 3>> adj;  // edge-adjacent faces (-1: none)
+
+    VSASegmentation(MeshType &mesh, const Params &params, vcg::CallBackPos *callback)
+        : m(mesh), p(params), cb(callback), n(int(mesh.face.size()))
+    {
+        area.assign(n, 0.0);
+        normal.assign(n, Vec(0, 0, 0));
+        adj.assign(n, {-1, -1, -1});
+        for (FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            int i = int(vcg::tri::Index(m, f));
+            AreaNormal(f, area[i], normal[i]);
+            for (int k = 0; k < 3; ++k) {
+                FaceType *g = f.FFp(k);
+                if (g != nullptr && g != &f && !g->IsD()) adj[i][k] = int(vcg::tri::Index(m, g));
+            }
+        }
+    }
+
+    double Error(int face, int region) const { return area[face] * (normal[face] - proxy[region]).SquaredNorm(); }
+
+    void Progress(int percent, const char *what) const
+    {
+        if (cb) cb(std::min(99, std::max(0, percent)), what);
+    }
+
+    // One flooding from the current seeds with the current proxies.
+    void Partition()
+    {
+        label.assign(n, -1);
+        std::priority_queue<QueueItem> q;
+        for (int r = 0; r < int(seeds.size()); ++r) label[seeds[r]] = r;
+        for (int r = 0; r < int(seeds.size()); ++r)
+            for (int g : adj[seeds[r]])
+                if (g >= 0 && label[g] < 0) q.push({Error(g, r), g, r});
+        while (!q.empty()) {
+            QueueItem it = q.top();
+            q.pop();
+            if (label[it.face] >= 0) continue;
+            label[it.face] = it.region;
+            for (int g : adj[it.face])
+                if (g >= 0 && label[g] < 0) q.push({Error(g, it.region), g, it.region});
+        }
+    }
+
+    // Proxy normal = normalised area-weighted normal sum; a zero sum keeps the seed's normal.
+    void FitProxies()
+    {
+        std::vector<Vec> sum(seeds.size(), Vec(0, 0, 0));
+        for (int f = 0; f < n; ++f)
+            if (label[f] >= 0) sum[label[f]] += normal[f] * area[f];
+        for (size_t r = 0; r < seeds.size(); ++r) {
+            double len = sum[r].Norm();
+            if (len > 0) proxy[r] = sum[r] / len;
+            else if (normal[seeds[r]].SquaredNorm() > 0) proxy[r] = normal[seeds[r]];
+        }
+    }
+
+    double TotalError() const
+    {
+        double e = 0;
+        for (int f = 0; f < n; ++f)
+            if (label[f] >= 0) e += Error(f, label[f]);
+        return e;
+    }
+
+    // Each region restarts from its face of smallest error.
+    void ReseedAtBestFaces()
+    {
+        std::vector<double> best(seeds.size(), -1);
+        for (int f = 0; f < n; ++f) {
+            int r = label[f];
+            if (r < 0) continue;
+            double e = Error(f, r);
+            if (best[r] < 0 || e < best[r] || (e == best[r] && f < seeds[r])) { best[r] = e; seeds[r] = f; }
+        }
+    }
+
+    // Lloyd iterations from the current seeds and proxies; returns the final total error.
+    double Lloyd(int maxIterations, Result &res)
+    {
+        Partition();
+        FitProxies();
+        double e = TotalError();
+        for (int it = 0; it < maxIterations; ++it) {
+            ReseedAtBestFaces();
+            Partition();
+            FitProxies();
+            double e2 = TotalError();
+            ++res.lloydIterations;
+            bool converged = !(e - e2 > p.relativeTolerance * e);
+            e = e2;
+            if (converged) break;
+        }
+        ReseedAtBestFaces();
+        return e;
+    }
+
+    void AddSeed(int face)
+    {
+        seeds.push_back(face);
+        proxy.push_back(normal[face].SquaredNorm() > 0 ? normal[face] : Vec(0, 0, 1));
+    }
+
+    // Random distinct seed faces, then one more in every component that got none.
+    void InitialSeeds(int count, Result &res)
+    {
+        std::vector<int> comp(n, -1);
+        std::vector<int> compFace;  // a face of each component
+        std::vector<int> stack;
+        for (int f = 0; f < n; ++f) {
+            if (m.face[f].IsD() || comp[f] >= 0) continue;
+            int c = int(compFace.size());
+            compFace.push_back(f);
+            comp[f] = c;
+            stack.push_back(f);
+            while (!stack.empty()) {
+                int g = stack.back();
+                stack.pop_back();
+                for (int h : adj[g])
+                    if (h >= 0 && comp[h] < 0) { comp[h] = c; stack.push_back(h); }
+            }
+        }
+        res.components = int(compFace.size());
+        std::vector<int> live;
+        for (int f = 0; f < n; ++f)
+            if (!m.face[f].IsD()) live.push_back(f);
+        std::mt19937 rng(p.randomSeed);
+        std::vector<char> taken(n, 0), compSeeded(compFace.size(), 0);
+        count = std::min<int>(count, int(live.size()));
+        for (int k = 0; k < count; ++k) {  // partial Fisher-Yates: distinct, reproducible
+            int j = k + int(rng() % uint32_t(live.size() - k));
+            std::swap(live[k], live[j]);
+            AddSeed(live[k]);
+            taken[live[k]] = 1;
+            compSeeded[comp[live[k]]] = 1;
+        }
+        for (size_t c = 0; c < compFace.size(); ++c)
+            if (!compSeeded[c]) AddSeed(compFace[c]);
+    }
+
+    // Per region: largest angle between a face normal and the proxy, and the face of largest error.
+    void RegionStats(std::vector<double> &maxAngle, std::vector<int> &worstFace, std::vector<double> &regionError) const
+    {
+        size_t k = seeds.size();
+        maxAngle.assign(k, 0.0);
+        worstFace.assign(k, -1);
+        regionError.assign(k, 0.0);
+        std::vector<double> worst(k, -1.0);
+        for (int f = 0; f < n; ++f) {
+            int r = label[f];
+            if (r < 0) continue;
+            double e = Error(f, r);
+            regionError[r] += e;
+            if (f != seeds[r] && e > worst[r]) { worst[r] = e; worstFace[r] = f; }
+            if (area[f] > 0) {
+                double c = std::max(-1.0, std::min(1.0, normal[f] * proxy[r]));
+                maxAngle[r] = std::max(maxAngle[r], std::acos(c) * 180.0 / M_PI);
+            }
+        }
+    }
+
+    void Run(Result &res)
+    {
+        const int liveFaces = m.fn;
+        if (p.mode == ThresholdSeeding) {
+            InitialSeeds(std::min(p.initialSeeds, p.maxRegions), res);
+            for (;;) {
+                ++res.seedingRounds;
+                Progress(int(100.0 * seeds.size() / std::max(1, p.maxRegions)), "VSA: Lloyd iterations");
+                Lloyd(p.maxIterations, res);
+                std::vector<double> maxAngle, regionError;
+                std::vector<int> worstFace;
+                RegionStats(maxAngle, worstFace, regionError);
+                std::vector<int> split;
+                for (size_t r = 0; r < seeds.size(); ++r)
+                    if (maxAngle[r] > p.thresholdAngleDeg && worstFace[r] >= 0) split.push_back(int(r));
+                if (split.empty() || int(seeds.size()) >= p.maxRegions) break;
+                // Worst regions first, so the cap on the region count keeps the most useful seeds.
+                std::sort(split.begin(), split.end(), [&](int a, int b) { return regionError[a] > regionError[b]; });
+                for (int r : split) {
+                    if (int(seeds.size()) >= p.maxRegions) break;
+                    AddSeed(worstFace[r]);
+                }
+            }
+        } else {
+            const int target = std::min(p.maxRegions, liveFaces);
+            InitialSeeds(std::min(p.initialSeeds, target), res);
+            while (int(seeds.size()) < target) {
+                ++res.seedingRounds;
+                Progress(int(100.0 * seeds.size() / target), "VSA: incremental seeding");
+                Lloyd(std::min(p.relaxationsPerSeed, p.maxIterations), res);
+                std::vector<double> maxAngle, regionError;
+                std::vector<int> worstFace;
+                RegionStats(maxAngle, worstFace, regionError);
+                int best = -1;
+                for (size_t r = 0; r < seeds.size(); ++r)
+                    if (worstFace[r] >= 0 && (best < 0 || regionError[r] > regionError[best])) best = int(r);
+                if (best < 0) break;  // every region is a single face
+                AddSeed(worstFace[best]);
+            }
+            ++res.seedingRounds;
+            Lloyd(p.maxIterations, res);
+        }
+        // Labels and proxies are those of the last Lloyd step (consistent with each other).
+        std::vector<double> maxAngle, regionError;
+        std::vector<int> worstFace;
+        RegionStats(maxAngle, worstFace, regionError);
+        res.faceRegion = label;
+        res.seedFace = seeds;
+        res.proxyNormal = proxy;
+        res.regions = int(seeds.size());
+        res.l21Error = TotalError();
+        res.maxDeviationDeg = maxAngle.empty() ? 0.0 : *std::max_element(maxAngle.begin(), maxAngle.end());
+    }
+};
+
+}  // namespace vcg_ext
+
+#endif
