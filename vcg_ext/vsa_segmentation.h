@@ -49,6 +49,7 @@ public:
         double relativeTolerance = 1e-4;  // Lloyd stops when the error drops by less than this fraction
         uint32_t randomSeed = 0;          // same seed, same result
         int relaxationsPerSeed = 5;       // fixed mode: Lloyd iterations after each added seed
+        int teleportAttempts = 10;        // fixed mode: merge the cheapest adjacent pair, re-seed the worst region
 
         // Empty when valid, else what is wrong.
         std::string Validate() const
@@ -244,6 +245,35 @@ private:
         proxy.push_back(normal[face].SquaredNorm() > 0 ? normal[face] : Vec(0, 0, 1));
     }
 
+    // Splits regions: each (region, face) pair adds a seed at `face` (a face of `region`) and
+    // restarts `region` itself from its face farthest from the new seed in the L2,1 sense, so the
+    // two floodings start on opposite sides (a region spanning two flat parts separates cleanly).
+    // One pass over the faces for all splits. `reuse[i]` >= 0 recycles that region index.
+    void SplitRegions(const std::vector<std::pair<int, int>> &splits, const std::vector<int> &reuse = {})
+    {
+        std::vector<int> splitOf(seeds.size(), -1);
+        for (size_t i = 0; i < splits.size(); ++i) splitOf[splits[i].first] = int(i);
+        std::vector<double> best(splits.size(), 0.0);
+        std::vector<int> far(splits.size(), -1);
+        for (int f = 0; f < n; ++f) {
+            int r = label[f];
+            if (r < 0 || splitOf[r] < 0) continue;
+            int i = splitOf[r];
+            double e = area[f] * (normal[f] - normal[splits[i].second]).SquaredNorm();
+            if (e > best[i]) { best[i] = e; far[i] = f; }
+        }
+        for (size_t i = 0; i < splits.size(); ++i) {
+            int r = splits[i].first, face = splits[i].second;
+            if (far[i] >= 0 && far[i] != face) { seeds[r] = far[i]; proxy[r] = normal[far[i]]; }
+            if (i < reuse.size() && reuse[i] >= 0) {
+                seeds[reuse[i]] = face;
+                proxy[reuse[i]] = normal[face].SquaredNorm() > 0 ? normal[face] : Vec(0, 0, 1);
+            } else {
+                AddSeed(face);
+            }
+        }
+    }
+
     // Random distinct seed faces, then one more in every component that got none.
     void InitialSeeds(int count, Result &res)
     {
@@ -302,6 +332,57 @@ private:
         }
     }
 
+    // Fitted-proxy error of a region from its area sum A and area-weighted normal sum S:
+    // sum a_f |n_f - S/|S||^2 = 2A - 2|S| (unit normals; zero-area faces contribute nothing).
+    // Merging two regions therefore costs 2 (|S_a| + |S_b| - |S_a + S_b|).
+    //
+    // Incremental seeding can leave two seeds on one flat part while another region spans two
+    // parts (a local minimum Lloyd cannot leave). Teleportation (as in CGAL's VSA) merges the
+    // adjacent pair that is cheapest to merge, spends the freed seed in the region of largest error,
+    // and keeps the change only when the Lloyd iterations that follow lower the total error.
+    void Teleport(Result &res)
+    {
+        for (int attempt = 0; attempt < p.teleportAttempts && seeds.size() >= 3; ++attempt) {
+            const size_t k = seeds.size();
+            std::vector<Vec> sum(k, Vec(0, 0, 0));
+            for (int f = 0; f < n; ++f)
+                if (label[f] >= 0) sum[label[f]] += normal[f] * area[f];
+            double bestCost = -1;
+            int ra = -1, rb = -1;
+            for (int f = 0; f < n; ++f)
+                for (int g : adj[f]) {
+                    if (g < 0 || label[f] < 0 || label[g] < 0 || label[f] >= label[g]) continue;
+                    int a = label[f], b = label[g];
+                    double cost = 2 * (sum[a].Norm() + sum[b].Norm() - (sum[a] + sum[b]).Norm());
+                    if (bestCost < 0 || cost < bestCost) { bestCost = cost; ra = a; rb = b; }
+                }
+            if (ra < 0) return;
+            std::vector<double> maxAngle, regionError;
+            std::vector<int> worstFace;
+            RegionStats(maxAngle, worstFace, regionError);
+            int worst = -1;
+            for (size_t r = 0; r < k; ++r)
+                if (int(r) != ra && int(r) != rb && worstFace[r] >= 0 && (worst < 0 || regionError[r] > regionError[worst]))
+                    worst = int(r);
+            if (worst < 0 || !(bestCost < regionError[worst])) return;
+
+            const double before = TotalError();
+            std::vector<int> oldLabel = label, oldSeeds = seeds;
+            std::vector<Vec> oldProxy = proxy;
+            const int newSeed = worstFace[worst];
+            for (int f = 0; f < n; ++f)  // merge rb into ra
+                if (label[f] == rb) label[f] = ra;
+            FitProxies();
+            ReseedAtBestFaces();
+            SplitRegions({{worst, newSeed}}, {rb});  // the freed index rb restarts in the worst region
+            const double after = Lloyd(p.maxIterations, res);
+            if (!(after < before * (1 - 1e-9))) {
+                label = oldLabel; seeds = oldSeeds; proxy = oldProxy;
+                return;
+            }
+        }
+    }
+
     void Run(Result &res)
     {
         const int liveFaces = m.fn;
@@ -320,10 +401,10 @@ private:
                 if (split.empty() || int(seeds.size()) >= p.maxRegions) break;
                 // Worst regions first, so the cap on the region count keeps the most useful seeds.
                 std::sort(split.begin(), split.end(), [&](int a, int b) { return regionError[a] > regionError[b]; });
-                for (int r : split) {
-                    if (int(seeds.size()) >= p.maxRegions) break;
-                    AddSeed(worstFace[r]);
-                }
+                std::vector<std::pair<int, int>> splits;
+                for (int r : split)
+                    if (int(seeds.size() + splits.size()) < p.maxRegions) splits.push_back({r, worstFace[r]});
+                SplitRegions(splits);
             }
         } else {
             const int target = std::min(p.maxRegions, liveFaces);
@@ -339,10 +420,11 @@ private:
                 for (size_t r = 0; r < seeds.size(); ++r)
                     if (worstFace[r] >= 0 && (best < 0 || regionError[r] > regionError[best])) best = int(r);
                 if (best < 0) break;  // every region is a single face
-                AddSeed(worstFace[best]);
+                SplitRegions({{best, worstFace[best]}});
             }
             ++res.seedingRounds;
             Lloyd(p.maxIterations, res);
+            Teleport(res);
         }
         // Labels and proxies are those of the last Lloyd step (consistent with each other).
         std::vector<double> maxAngle, regionError;

@@ -1,0 +1,136 @@
+// Runs the plugin's filters in-process on a MeshDocument (as MeshLab does, without a GUI), so the
+// tests can check the contract on bad input: false, a clear errorMessage, the same text in the
+// log, and the mesh left exactly as it was (snapshots compared field by field).
+#ifndef QMF_TESTS_PLUGIN_HARNESS_H
+#define QMF_TESTS_PLUGIN_HARNESS_H
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <common/GLLogStream.h>
+#include <common/meshmodel.h>
+#include <filter_qmorph_front.h>
+#include <vcg/complex/algorithms/create/platonic.h>
+#include <wrap/gl/glu_tesselator.h>  // import_off.h tessellates with GLU when GL is included
+#include <wrap/io_trimesh/import_off.h>
+
+namespace qmf_test {
+
+// Everything a filter could change on a layer, in comparable form.
+struct MeshSnapshot {
+    int dataMask = 0;
+    std::vector<std::array<float, 3>> coords;
+    std::vector<std::array<int, 3>> faces;
+    std::vector<int> faceFlags;
+    std::vector<int> vertFlags;
+    std::vector<float> faceQuality;
+    std::vector<unsigned> faceColor;
+    std::vector<std::array<int, 2>> edges;
+
+    static MeshSnapshot Of(MeshModel &mm)
+    {
+        MeshSnapshot s;
+        s.dataMask = mm.dataMask();
+        CMeshO &m = mm.cm;
+        for (auto &v : m.vert) {
+            s.coords.push_back({v.P()[0], v.P()[1], v.P()[2]});
+            s.vertFlags.push_back(v.Flags());
+        }
+        for (auto &f : m.face) {
+            s.faces.push_back({int(vcg::tri::Index(m, f.V(0))), int(vcg::tri::Index(m, f.V(1))), int(vcg::tri::Index(m, f.V(2)))});
+            s.faceFlags.push_back(f.Flags());
+            if (mm.hasDataMask(MeshModel::MM_FACEQUALITY)) s.faceQuality.push_back(f.Q());
+            if (mm.hasDataMask(MeshModel::MM_FACECOLOR)) {
+                auto c = f.C();
+                s.faceColor.push_back(unsigned(c[0]) | unsigned(c[1]) << 8 | unsigned(c[2]) << 16 | unsigned(c[3]) << 24);
+            }
+        }
+        for (auto &e : m.edge) s.edges.push_back({int(vcg::tri::Index(m, e.V(0))), int(vcg::tri::Index(m, e.V(1)))});
+        return s;
+    }
+    // NaN-safe equality of the coordinates (bitwise).
+    bool operator==(const MeshSnapshot &o) const
+    {
+        if (coords.size() != o.coords.size()) return false;
+        for (size_t i = 0; i < coords.size(); ++i)
+            for (int k = 0; k < 3; ++k)
+                if (std::memcmp(&coords[i][k], &o.coords[i][k], sizeof(float)) != 0) return false;
+        return dataMask == o.dataMask && faces == o.faces && faceFlags == o.faceFlags && vertFlags == o.vertFlags &&
+               std::memcmp(faceQuality.data(), o.faceQuality.data(), faceQuality.size() * sizeof(float)) == 0 &&
+               faceQuality.size() == o.faceQuality.size() && faceColor == o.faceColor && edges == o.edges;
+    }
+};
+
+struct FilterRun {
+    bool ok = false;
+    std::string error;               // errorMessage
+    std::vector<std::string> log;    // every log line the run wrote
+    bool Logged(const std::string &text) const
+    {
+        for (auto &l : log)
+            if (l.find(text) != std::string::npos) return true;
+        return false;
+    }
+};
+
+class PluginHarness
+{
+public:
+    QMorphFrontPlugin plugin;
+    GLLogStream log;
+    MeshDocument doc;
+
+    PluginHarness() { plugin.setLog(&log); }
+
+    MeshModel *AddMesh(const std::vector<vcg::Point3f> &v, const std::vector<std::array<int, 3>> &f,
+                       const QString &name = "mesh")
+    {
+        MeshModel *mm = doc.addNewMesh("", name, true);
+        std::vector<vcg::Point3i> fi;
+        for (auto &t : f) fi.push_back(vcg::Point3i(t[0], t[1], t[2]));
+        vcg::tri::BuildMeshFromCoordVectorIndexVector(mm->cm, v, fi);
+        mm->UpdateBoxAndNormals();
+        return mm;
+    }
+
+    MeshModel *LoadOff(const std::string &path, const QString &name = "mesh")
+    {
+        MeshModel *mm = doc.addNewMesh(QString::fromStdString(path), name, true);
+        int mask = 0;
+        if (vcg::tri::io::ImporterOFF<CMeshO>::Open(mm->cm, path.c_str(), mask) != 0) return nullptr;
+        mm->UpdateBoxAndNormals();
+        return mm;
+    }
+
+    QAction *Action(const QString &filterName)
+    {
+        for (QAction *a : plugin.actions())
+            if (a->text() == filterName) return a;
+        return nullptr;
+    }
+
+    // Default parameters of a filter for the current mesh.
+    RichParameterList Defaults(const QString &filterName)
+    {
+        RichParameterList par;
+        plugin.initParameterSet(Action(filterName), *doc.mm(), par);
+        return par;
+    }
+
+    FilterRun Apply(const QString &filterName, const RichParameterList &par)
+    {
+        FilterRun r;
+        int before = log.logStringList().size();
+        r.ok = plugin.applyFilter(Action(filterName), doc, par, nullptr);
+        r.error = plugin.errorMsg().toStdString();
+        const auto &lines = log.logStringList();
+        for (int i = before; i < lines.size(); ++i) r.log.push_back(lines[i].second.toStdString());
+        return r;
+    }
+    FilterRun Apply(const QString &filterName) { return Apply(filterName, Defaults(filterName)); }
+};
+
+}  // namespace qmf_test
+
+#endif

@@ -1,0 +1,259 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "test_mesh.h"
+#include <vcg_ext/vsa_segmentation.h>
+
+using namespace qmf_test;
+typedef vcg_ext::VSASegmentation<TMesh> VSA;
+typedef vcg::Point3d D3;
+
+namespace {
+
+D3 UnitNormal(const TFace &f)
+{
+    D3 a = D3::Construct(f.cP(0)), b = D3::Construct(f.cP(1)), c = D3::Construct(f.cP(2));
+    return ((b - a) ^ (c - a)).Normalize();
+}
+
+// Every label in 0..K-1, every region non-empty and edge-connected (BFS inside the region).
+void ExpectValidPartition(TMesh &m, const VSA::Result &r)
+{
+    ASSERT_EQ(r.faceRegion.size(), m.face.size());
+    std::vector<int> size(r.regions, 0);
+    for (auto &f : m.face) {
+        int id = r.faceRegion[vcg::tri::Index(m, f)];
+        ASSERT_GE(id, 0);
+        ASSERT_LT(id, r.regions);
+        ASSERT_EQ(int(f.Q()), id) << "face quality holds the region id";
+        size[id]++;
+    }
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    std::vector<char> seen(m.face.size(), 0);
+    for (int id = 0; id < r.regions; ++id) {
+        ASSERT_GT(size[id], 0) << "region " << id << " is empty";
+        int start = -1;
+        for (size_t i = 0; i < m.face.size() && start < 0; ++i)
+            if (r.faceRegion[i] == id) start = int(i);
+        std::vector<int> stack{start};
+        seen[start] = 1;
+        int reached = 0;
+        while (!stack.empty()) {
+            int f = stack.back();
+            stack.pop_back();
+            ++reached;
+            for (int k = 0; k < 3; ++k) {
+                int g = int(vcg::tri::Index(m, m.face[f].FFp(k)));
+                if (!seen[g] && r.faceRegion[g] == id) { seen[g] = 1; stack.push_back(g); }
+            }
+        }
+        EXPECT_EQ(reached, size[id]) << "region " << id << " is not edge-connected";
+    }
+}
+
+// Largest angle (deg) between a face normal and the area-weighted mean normal of its region,
+// computed independently of the core.
+double MaxRegionDeviation(TMesh &m, const std::vector<int> &label, int regions)
+{
+    std::vector<D3> sum(regions, D3(0, 0, 0));
+    for (auto &f : m.face) {
+        D3 a = D3::Construct(f.cP(0)), b = D3::Construct(f.cP(1)), c = D3::Construct(f.cP(2));
+        sum[label[vcg::tri::Index(m, f)]] += (b - a) ^ (c - a);  // 2 * area * normal
+    }
+    double worst = 0;
+    for (auto &f : m.face) {
+        D3 n = UnitNormal(f), p = sum[label[vcg::tri::Index(m, f)]];
+        p.Normalize();
+        worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, n * p))) * 180 / M_PI);
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST(VSA, CubeFixedSixRegionsAreTheSixSidesWithZeroError)
+{
+    TMesh m;
+    MakeCube(m, 6, 0.35f, 7);
+    VSA::Params p;
+    p.mode = VSA::FixedRegionCount;
+    p.maxRegions = 6;
+    for (uint32_t seed : {0u, 1u, 2u, 3u}) {
+        p.randomSeed = seed;
+        VSA::Result r = VSA::Segment(m, p);
+        ASSERT_EQ(r.error, "");
+        ASSERT_EQ(r.regions, 6);
+        ExpectValidPartition(m, r);
+        EXPECT_NEAR(r.l21Error, 0.0, 1e-9) << "seed " << seed;
+        // each region is exactly one side: all its faces share one axis normal, sides distinct
+        std::set<int> axes;
+        for (int id = 0; id < 6; ++id) {
+            std::set<int> regionAxes;
+            for (auto &f : m.face) {
+                if (r.faceRegion[vcg::tri::Index(m, f)] != id) continue;
+                D3 n = UnitNormal(f);
+                int axis = 0;
+                for (int k = 1; k < 3; ++k) if (std::fabs(n[k]) > std::fabs(n[axis])) axis = k;
+                regionAxes.insert(axis * 2 + (n[axis] > 0));
+            }
+            ASSERT_EQ(regionAxes.size(), 1u) << "region " << id << " spans several sides (seed " << seed << ")";
+            axes.insert(*regionAxes.begin());
+        }
+        EXPECT_EQ(axes.size(), 6u);
+        int perSide = 6 * 6 * 2;
+        for (int id = 0; id < 6; ++id)
+            EXPECT_EQ(std::count(r.faceRegion.begin(), r.faceRegion.end(), id), perSide);
+    }
+}
+
+TEST(VSA, ThresholdModeKeepsEveryRegionWithinTheAngle)
+{
+    TMesh m;
+    MakeCube(m, 5, 0.3f, 3);
+    for (double thr : {60.0, 30.0, 10.0}) {
+        VSA::Params p;
+        p.thresholdAngleDeg = thr;
+        VSA::Result r = VSA::Segment(m, p);
+        ASSERT_EQ(r.error, "");
+        ExpectValidPartition(m, r);
+        EXPECT_LE(r.maxDeviationDeg, thr + 1e-6);
+        EXPECT_LE(MaxRegionDeviation(m, r.faceRegion, r.regions), thr + 1e-6);
+        if (thr < 45) { EXPECT_GE(r.regions, 6) << "two cube sides in one region deviate by 45 deg"; }
+    }
+    TMesh sphere;
+    MakeSphere(sphere, 3);
+    VSA::Params p;
+    VSA::Result r = VSA::Segment(sphere, p);
+    ExpectValidPartition(sphere, r);
+    EXPECT_GT(r.regions, 2);
+    EXPECT_LE(MaxRegionDeviation(sphere, r.faceRegion, r.regions), 60.0 + 1e-6);
+}
+
+TEST(VSA, CylinderCapsAreSeparatedFromTheSide)
+{
+    TMesh m;
+    MakeCylinder(m, 32, 6, 1.f, 3.f, 3);
+    VSA::Params p;
+    p.thresholdAngleDeg = 30;  // a region mixing cap and side faces deviates >= 45 deg
+    VSA::Result r = VSA::Segment(m, p);
+    ASSERT_EQ(r.error, "");
+    ExpectValidPartition(m, r);
+    std::vector<int> kinds(r.regions, 0);  // bit 1: cap face, bit 2: side face
+    for (auto &f : m.face) {
+        D3 n = UnitNormal(f);
+        kinds[r.faceRegion[vcg::tri::Index(m, f)]] |= std::fabs(n[2]) > 0.99 ? 1 : 2;
+    }
+    int capRegions = 0;
+    for (int k : kinds) {
+        EXPECT_NE(k, 3) << "a region holds both cap and side faces";
+        capRegions += k == 1;
+    }
+    EXPECT_EQ(capRegions, 2);
+}
+
+TEST(VSA, ErrorMatchesHandComputation)
+{
+    // Two faces on the edge (0,0,0)-(1,0,0): normal +z with area 1/2, normal +y with area 1.
+    // One region: N = (0, 1, 1/2) / |.| = (0, 2, 1)/sqrt5;
+    // E = 1/2 * (2 - 2/sqrt5) + 1 * (2 - 4/sqrt5) = 3 - sqrt5.
+    TMesh m;
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0), P3(0, 0, 2)}, {{0, 1, 2}, {1, 0, 3}});
+    VSA::Params p;
+    p.mode = VSA::FixedRegionCount;
+    p.maxRegions = 1;
+    VSA::Result r = VSA::Segment(m, p);
+    ASSERT_EQ(r.regions, 1);
+    EXPECT_NEAR(r.l21Error, 3.0 - std::sqrt(5.0), 1e-7);
+    EXPECT_NEAR(r.proxyNormal[0][1], 2 / std::sqrt(5.0), 1e-7);
+    EXPECT_NEAR(r.proxyNormal[0][2], 1 / std::sqrt(5.0), 1e-7);
+    EXPECT_NEAR(VSA::L21Error(m, r.faceRegion, r.proxyNormal), 3.0 - std::sqrt(5.0), 1e-7);
+    p.maxRegions = 2;
+    r = VSA::Segment(m, p);
+    ASSERT_EQ(r.regions, 2);
+    EXPECT_NEAR(r.l21Error, 0.0, 1e-12);
+    EXPECT_NE(r.faceRegion[0], r.faceRegion[1]);
+}
+
+TEST(VSA, SameSeedSameLabels)
+{
+    TMesh m;
+    MakeSphere(m, 3);
+    VSA::Params p;
+    p.randomSeed = 42;
+    VSA::Result a = VSA::Segment(m, p), b = VSA::Segment(m, p);
+    EXPECT_EQ(a.faceRegion, b.faceRegion);
+    EXPECT_EQ(a.l21Error, b.l21Error);
+    p.mode = VSA::FixedRegionCount;
+    p.maxRegions = 9;
+    a = VSA::Segment(m, p);
+    b = VSA::Segment(m, p);
+    EXPECT_EQ(a.faceRegion, b.faceRegion);
+    EXPECT_EQ(a.regions, 9);
+}
+
+TEST(VSA, EveryComponentGetsARegion)
+{
+    TMesh m, other;
+    MakeCube(m, 3);
+    MakeSphere(other, 2);
+    for (auto &v : other.vert) v.P() += P3(5, 0, 0);
+    vcg::tri::Append<TMesh, TMesh>::Mesh(m, other);
+    VSA::Params p;
+    p.initialSeeds = 1;
+    p.mode = VSA::FixedRegionCount;
+    p.maxRegions = 1;  // fewer than the components: each still gets its own
+    VSA::Result r = VSA::Segment(m, p);
+    EXPECT_EQ(r.components, 2);
+    EXPECT_EQ(r.regions, 2);
+    ExpectValidPartition(m, r);
+}
+
+TEST(VSA, ZeroAreaFacesAreLabelledWithoutNaN)
+{
+    TMesh m;  // a strip with a collinear (zero-area) face in the middle
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(2, 0, 0), P3(0, 1, 0), P3(2, 1, 0), P3(1, 0, 1)},
+          {{0, 1, 3}, {1, 2, 4}, {0, 2, 1}, {1, 4, 3}, {0, 5, 2}});
+    VSA::Params p;
+    VSA::Result r = VSA::Segment(m, p);
+    ASSERT_EQ(r.error, "");
+    EXPECT_TRUE(std::isfinite(r.l21Error));
+    for (auto &n : r.proxyNormal) EXPECT_TRUE(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]));
+    for (auto &f : m.face) EXPECT_GE(r.faceRegion[vcg::tri::Index(m, f)], 0);
+}
+
+TEST(VSA, ParametersOutOfRangeAreRejected)
+{
+    TMesh m;
+    MakeCube(m, 2);
+    for (double a : {0.0, -5.0, 180.0, 200.0}) {
+        VSA::Params p;
+        p.thresholdAngleDeg = a;
+        EXPECT_NE(VSA::Segment(m, p).error, "") << a;
+    }
+    VSA::Params p;
+    p.maxRegions = 0;
+    EXPECT_NE(VSA::Segment(m, p).error.find("max regions"), std::string::npos);
+    p = VSA::Params();
+    p.maxIterations = 0;
+    EXPECT_NE(VSA::Segment(m, p).error, "");
+    p = VSA::Params();
+    p.initialSeeds = 0;
+    EXPECT_NE(VSA::Segment(m, p).error, "");
+    TMesh empty;
+    EXPECT_NE(VSA::Segment(empty, VSA::Params()).error, "");
+}
+
+TEST(VSA, FandiskThresholdRegionsFollowTheShape)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/fandisk.off")) << "run scripts/setup.sh to extract the test meshes";
+    VSA::Params p;
+    VSA::Result r = VSA::Segment(m, p);
+    ASSERT_EQ(r.error, "");
+    ExpectValidPartition(m, r);
+    EXPECT_LE(MaxRegionDeviation(m, r.faceRegion, r.regions), 60.0 + 1e-6);
+    EXPECT_GE(r.regions, 6);
+    EXPECT_LE(r.regions, 60);
+}
