@@ -1,52 +1,45 @@
 #include "filter_qmorph_front.h"
 
-namespace {
-const char *kPaperReference =
-    "<br><br>See: <i>Transformation of a closed 3D triangular mesh to a quadrilateral mesh based on "
-    "feature edges</i> (the seed paper of this plugin), and<br>"
-    "<i>S. Owen, M. Staten, S. Canann, S. Saigal</i>, <b>\"Q-Morph: an indirect approach to advancing front "
-    "quad meshing\"</b>, IJNME 44:1317-1340, 1999.";
-}
-
 QMorphFrontPlugin::QMorphFrontPlugin()
 {
-    typeList << FP_VSA_SEGMENT;
+    typeList << FP_VSA_SEGMENT << FP_SMOOTH_BOUNDARIES << FP_SPLIT_ALONG_FRONT << FP_QMORPH;
     for (FilterIDType t : typeList) actionList << new QAction(filterName(t), this);
 }
 
+// These names are the scripting API (.mlx files refer to them): never rename them.
 QString QMorphFrontPlugin::filterName(FilterIDType filter) const
 {
     switch (filter) {
     case FP_VSA_SEGMENT: return "Segment by Variational Shape Approximation";
+    case FP_SMOOTH_BOUNDARIES: return "Smooth Region Boundaries";
+    case FP_SPLIT_ALONG_FRONT: return "Split Triangles along Front";
+    case FP_QMORPH: return "Q-Morph Quad Conversion";
     }
     return "unknown filter";
 }
 
 QString QMorphFrontPlugin::filterInfo(FilterIDType filter) const
 {
+    const QString paper =
+        "<br><br>Pipeline after: <i>Transformation of a closed 3D triangular mesh to a quadrilateral mesh based "
+        "on feature edges</i> (VSA segmentation, boundary smoothing, triangle splitting, Q-Morph in 3D).";
     switch (filter) {
-    case FP_VSA_SEGMENT:
-        return QString(
-                   "Step 1 of the closed-mesh-to-quads pipeline. Partitions the mesh into near-planar, "
-                   "edge-connected regions by Variational Shape Approximation with the L<sup>2,1</sup> metric "
-                   "(Lloyd iterations of flooding and proxy fitting). Starts from a few random seeds and adds a "
-                   "seed in every region whose faces deviate from its proxy normal by more than the threshold "
-                   "angle, or reaches a fixed region count by incremental seeding. The region id of each face "
-                   "is written to the <b>face quality</b> (0..K-1) and faces are coloured by region."
-                   "<br><br>See: <i>D. Cohen-Steiner, P. Alliez, M. Desbrun</i>, <b>\"Variational Shape "
-                   "Approximation\"</b>, ACM SIGGRAPH 2004, pp. 905-914.") + kPaperReference;
+    case FP_VSA_SEGMENT: return vsaInfo() + paper;
+    case FP_SMOOTH_BOUNDARIES: return smoothInfo() + paper;
+    case FP_SPLIT_ALONG_FRONT: return splitInfo() + paper;
+    case FP_QMORPH: return qmorphInfo() + paper;
     }
     return "";
 }
 
-MeshFilterInterface::FilterClass QMorphFrontPlugin::getClass(QAction *)
+MeshFilterInterface::FilterClass QMorphFrontPlugin::getClass(QAction *a)
 {
-    return FilterClass(Remeshing);
+    return ID(a) == FP_QMORPH ? FilterClass(Remeshing | Polygonal) : FilterClass(Remeshing);
 }
 
-MeshFilterInterface::FILTER_ARITY QMorphFrontPlugin::filterArity(QAction *) const
+MeshFilterInterface::FILTER_ARITY QMorphFrontPlugin::filterArity(QAction *a) const
 {
-    return SINGLE_MESH;
+    return ID(a) == FP_SPLIT_ALONG_FRONT ? FIXED : SINGLE_MESH;  // splitting reads a second (polyline) layer
 }
 
 int QMorphFrontPlugin::getPreConditions(QAction *) const
@@ -54,18 +47,34 @@ int QMorphFrontPlugin::getPreConditions(QAction *) const
     return MeshModel::MM_NONE;  // checked in applyFilter, with a message saying what is missing
 }
 
+// Precise post-conditions: MM_GEOMETRY_AND_TOPOLOGY_CHANGE would make the GUI reset the
+// rendering of layer 0 (face colours no longer shown).
 int QMorphFrontPlugin::postCondition(QAction *a) const
 {
     switch (ID(a)) {
     case FP_VSA_SEGMENT: return MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
+    case FP_SMOOTH_BOUNDARIES: return MeshModel::MM_NONE;  // adds a layer, the mesh is untouched
+    case FP_SPLIT_ALONG_FRONT:
+    case FP_QMORPH:
+        return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER |
+               MeshModel::MM_FACEVERT | MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY |
+               MeshModel::MM_FACECOLOR | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
     }
     return MeshModel::MM_ALL;
 }
 
 void QMorphFrontPlugin::initParameterSet(QAction *a, MeshModel &m, RichParameterList &par)
 {
+    if (ID(a) == FP_VSA_SEGMENT) initVsaParameters(m, par);
+}
+
+void QMorphFrontPlugin::initParameterSet(QAction *a, MeshDocument &md, RichParameterList &par)
+{
     switch (ID(a)) {
-    case FP_VSA_SEGMENT: initVsaParameters(m, par); break;
+    case FP_VSA_SEGMENT: if (md.mm()) initVsaParameters(*md.mm(), par); break;
+    case FP_SMOOTH_BOUNDARIES: initSmoothParameters(md, par); break;
+    case FP_SPLIT_ALONG_FRONT: initSplitParameters(md, par); break;
+    case FP_QMORPH: initQMorphParameters(md, par); break;
     }
 }
 
@@ -74,6 +83,9 @@ bool QMorphFrontPlugin::applyFilter(QAction *a, MeshDocument &md, const RichPara
     if (md.mm() == nullptr) return fail(a->text(), "there is no current mesh");
     switch (ID(a)) {
     case FP_VSA_SEGMENT: return applyVsa(md, par, cb);
+    case FP_SMOOTH_BOUNDARIES: return applySmooth(md, par, cb);
+    case FP_SPLIT_ALONG_FRONT: return applySplit(md, par, cb);
+    case FP_QMORPH: return applyQMorph(md, par, cb);
     }
     return fail(a->text(), "unknown filter");
 }

@@ -7,6 +7,18 @@
 
 typedef vcg_ext::VSASegmentation<CMeshO> VSA;
 
+QString QMorphFrontPlugin::vsaInfo()
+{
+    return "Step 1 of the closed-mesh-to-quads pipeline. Partitions the mesh into near-planar, edge-connected "
+           "regions by Variational Shape Approximation with the L<sup>2,1</sup> metric (Lloyd iterations of "
+           "flooding and proxy fitting). Starts from a few random seeds and adds a seed in every region whose faces "
+           "deviate from its proxy normal by more than the threshold angle, or reaches a fixed region count by "
+           "incremental seeding. The region id of each face is written to the <b>face quality</b> (0..K-1) and "
+           "faces are coloured by region."
+           "<br><br>See: <i>D. Cohen-Steiner, P. Alliez, M. Desbrun</i>, <b>\"Variational Shape Approximation\"</b>, "
+           "ACM SIGGRAPH 2004, pp. 905-914.";
+}
+
 void QMorphFrontPlugin::initVsaParameters(MeshModel &, RichParameterList &par)
 {
     VSA::Params d;
