@@ -1,0 +1,375 @@
+// Q-Morph quad conversion of a vcg triangle mesh from its selected face-edges (and boundary).
+//
+// The front (selected face-edges + boundary edges) cuts the surface into patches; every patch is
+// cut out as its own mesh (a node where the front passes is copied once per fan sector, so slits,
+// patches touching themselves and annuli need no special case), meshed by PatchMesher from its
+// boundary loops, and written back. Initial front edges are never changed, so patches are
+// independent and the front stays a set of mesh edges; after the run those edges are again the
+// only selected face-edges. Output in MeshLab's polygonal form: a quad is two triangles sharing a
+// faux edge. Face quality (region id) is kept per patch (its area-majority value).
+#ifndef VCG_EXT_QMORPH_H
+#define VCG_EXT_QMORPH_H
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/flag.h>
+
+#include "mesh_checks.h"
+#include "qmorph_patch.h"
+#include "quad_quality.h"
+
+namespace vcg_ext {
+
+template <class MeshType>
+class QMorph
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
+    typedef typename MeshType::CoordType CoordType;
+    typedef qmorph::P3 P3;
+
+    struct Params {
+        bool preserveInitialFront = true;  // initial front edges are never changed (the paper)
+        bool smoothing = true;             // tangent-plane smoothing (local, and final sweeps)
+        int smoothingIterations = 5;       // final smoothing sweeps, 0..100
+        double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
+
+        std::string Validate() const
+        {
+            if (smoothingIterations < 0 || smoothingIterations > 100) return "smoothing iterations must be in 0..100";
+            if (!(closedAngleDeg > 30 && closedAngleDeg < 180)) return "the closed-end angle must be in (30, 180) degrees";
+            return "";
+        }
+    };
+
+    struct Result {
+        std::string error;
+        int initialFrontEdges = 0, patches = 0, patchesWithoutFront = 0;
+        int quads = 0, triangles = 0;
+        qmorph::PatchStats ops;
+        QuadQualityReport quality;
+        double seconds = 0;
+    };
+
+    // Unchanged mesh and a message when the input cannot be converted.
+    static std::string CheckInput(const MeshType &m)
+    {
+        MeshCheckReport r = MeshChecks<MeshType>::Inspect(m);
+        std::string why = r.FirstProblem(false);
+        if (!why.empty()) return why;
+        if (!r.IsTwoManifold()) return r.FirstProblem(true);
+        if (!r.IsOriented()) return "the mesh is not consistently oriented (" + std::to_string(r.inconsistentEdges) + " edges)";
+        if (r.IsClosed() && CountSelectedEdges(m) == 0)
+            return "the mesh is closed and has no selected edges: there is no initial front. Run 'Split Triangles "
+                   "along Front' (or 'Select Crease Edges') first";
+        return "";
+    }
+
+    static int CountSelectedEdges(const MeshType &m)
+    {
+        int n = 0;
+        for (const FaceType &f : m.face)
+            if (!f.IsD())
+                for (int k = 0; k < 3; ++k) n += f.IsFaceEdgeS(k) ? 1 : 0;
+        return n;  // face-edges (an interior edge selected on both sides counts twice)
+    }
+
+    static Result Apply(MeshType &m, const Params &params, vcg::CallBackPos *cb = nullptr)
+    {
+        auto t0 = std::chrono::steady_clock::now();
+        Result res;
+        res.error = params.Validate();
+        if (res.error.empty()) res.error = CheckInput(m);
+        if (!res.error.empty()) return res;
+
+        vcg::tri::RequireFFAdjacency(m);  // to read the quads back for the quality report
+        QMorph q(m, params, cb);
+        q.Run(res);
+        res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return res;
+    }
+
+private:
+    MeshType &m;
+    const Params &par;
+    vcg::CallBackPos *cb;
+
+    // live faces and their vertex indices
+    std::vector<int> faceIdx;                 // live face -> index in m.face
+    std::vector<std::array<int, 3>> tri;      // per live face
+    std::vector<char> cut;                    // per face-edge 3*f+k: on the front
+    std::vector<int> twinCorner;              // per face-edge: matching face-edge of the neighbour, or -1
+    std::vector<int> patchOf, sectorOf;       // per live face / per corner (root)
+
+    QMorph(MeshType &mesh, const Params &p, vcg::CallBackPos *callback) : m(mesh), par(p), cb(callback) {}
+
+    static uint64_t Key(int a, int b)
+    {
+        return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
+    }
+    static int Find(std::vector<int> &s, int x)
+    {
+        while (s[x] != x) { s[x] = s[s[x]]; x = s[x]; }
+        return x;
+    }
+    static void Unite(std::vector<int> &s, int a, int b)
+    {
+        a = Find(s, a); b = Find(s, b);
+        if (a != b) s[std::max(a, b)] = std::min(a, b);
+    }
+
+    void Progress(int percent, const char *msg) const
+    {
+        if (cb) cb(std::max(0, std::min(99, percent)), msg);
+    }
+
+    // Front edges, patches (faces joined across non-front edges) and node sectors (corners joined
+    // across non-front edges around a node).
+    void Partition(Result &res)
+    {
+        for (size_t i = 0; i < m.face.size(); ++i)
+            if (!m.face[i].IsD()) {
+                faceIdx.push_back(int(i));
+                const FaceType &f = m.face[i];
+                tri.push_back({int(vcg::tri::Index(m, f.cV(0))), int(vcg::tri::Index(m, f.cV(1))), int(vcg::tri::Index(m, f.cV(2)))});
+            }
+        const int F = int(tri.size());
+        struct E { uint64_t key; int he; };
+        std::vector<E> edges;
+        edges.reserve(3 * F);
+        for (int f = 0; f < F; ++f)
+            for (int k = 0; k < 3; ++k) edges.push_back({Key(tri[f][k], tri[f][(k + 1) % 3]), 3 * f + k});
+        std::sort(edges.begin(), edges.end(), [](const E &a, const E &b) { return a.key < b.key || (a.key == b.key && a.he < b.he); });
+        cut.assign(3 * F, 0);
+        twinCorner.assign(3 * F, -1);
+        for (size_t i = 0; i < edges.size();) {
+            size_t j = i;
+            while (j < edges.size() && edges[j].key == edges[i].key) ++j;
+            bool selected = false;
+            for (size_t k = i; k < j; ++k) selected = selected || m.face[faceIdx[edges[k].he / 3]].IsFaceEdgeS(edges[k].he % 3);
+            if (j - i == 2) {
+                twinCorner[edges[i].he] = edges[i + 1].he;
+                twinCorner[edges[i + 1].he] = edges[i].he;
+            }
+            if (selected || j - i != 2) {
+                for (size_t k = i; k < j; ++k) cut[edges[k].he] = 1;
+                ++res.initialFrontEdges;
+            }
+            i = j;
+        }
+        std::vector<int> faceSet(F), cornerSet(3 * F);
+        std::iota(faceSet.begin(), faceSet.end(), 0);
+        std::iota(cornerSet.begin(), cornerSet.end(), 0);
+        for (int h = 0; h < 3 * F; ++h) {
+            int t = twinCorner[h];
+            if (t < h || cut[h]) continue;
+            int f = h / 3, g = t / 3, k = h % 3, l = t % 3;
+            Unite(faceSet, f, g);
+            // edge k of f goes tri[f][k] -> tri[f][k+1]; edge l of g goes tri[f][k+1] -> tri[f][k]
+            Unite(cornerSet, 3 * f + k, 3 * g + (l + 1) % 3);
+            Unite(cornerSet, 3 * f + (k + 1) % 3, 3 * g + l);
+        }
+        patchOf.resize(F);
+        sectorOf.resize(3 * F);
+        for (int f = 0; f < F; ++f) patchOf[f] = Find(faceSet, f);
+        for (int c = 0; c < 3 * F; ++c) sectorOf[c] = Find(cornerSet, c);
+    }
+
+    void Run(Result &res)
+    {
+        Partition(res);
+        const int F = int(tri.size());
+        // faces grouped by patch
+        std::vector<int> order(F);
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return patchOf[a] < patchOf[b]; });
+
+        const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
+        std::vector<P3> outPoints;              // appended new vertices
+        std::vector<int> vertexNewPos(m.vert.size(), -2);  // -2 untouched, -1 removed, else moved
+        std::vector<P3> movedTo;
+        std::vector<std::array<int, 5>> outFaces;  // global vertex ids (negative: new vertex -k-1), size in [4]
+        std::vector<float> outQuality;
+        std::vector<char> used(m.vert.size(), 0);
+        qmorph::PatchParams pp;
+        pp.smoothing = par.smoothing;
+        pp.finalSmoothing = par.smoothingIterations;
+        pp.closedAngle = par.closedAngleDeg * M_PI / 180;
+
+        std::vector<int> localOfSector(3 * F, -1);
+        for (size_t s = 0; s < order.size();) {
+            size_t e = s;
+            while (e < order.size() && patchOf[order[e]] == patchOf[order[s]]) ++e;
+            Progress(int(100.0 * s / std::max<size_t>(1, order.size())), "Q-Morph: meshing patches");
+            ++res.patches;
+            // local mesh of the patch
+            std::vector<P3> pts;
+            std::vector<int> globalOf;      // local vertex -> global vertex
+            std::vector<std::array<int, 3>> ltri;
+            std::vector<char> lcut;
+            std::vector<int> home;
+            std::map<float, double> qualityArea;
+            for (size_t i = s; i < e; ++i) {
+                int f = order[i];
+                std::array<int, 3> t;
+                for (int k = 0; k < 3; ++k) {
+                    int sec = sectorOf[3 * f + k];
+                    if (localOfSector[sec] < 0) {
+                        localOfSector[sec] = int(pts.size());
+                        pts.push_back(P3::Construct(m.vert[tri[f][k]].cP()));
+                        globalOf.push_back(tri[f][k]);
+                        home.push_back(int(ltri.size()));
+                    }
+                    t[k] = localOfSector[sec];
+                    lcut.push_back(cut[3 * f + k]);
+                }
+                ltri.push_back(t);
+                if (hasQuality) {
+                    P3 a = pts[t[0]], b = pts[t[1]], c = pts[t[2]];
+                    qualityArea[float(m.face[faceIdx[f]].cQ())] += ((b - a) ^ (c - a)).Norm();
+                }
+            }
+            float patchQuality = 0;
+            double bestArea = -1;
+            for (auto &qv : qualityArea)
+                if (qv.second > bestArea) { bestArea = qv.second; patchQuality = qv.first; }
+            bool hasFront = false;
+            for (char c : lcut) hasFront = hasFront || c;
+            if (!hasFront) ++res.patchesWithoutFront;
+
+            qmorph::MixedMesh mm;
+            mm.Build(pts, ltri, lcut);
+            SurfaceProjector surface;
+            surface.Build(pts, ltri);
+            if (hasFront) {
+                qmorph::PatchMesher mesher(mm, surface, home, pp);
+                qmorph::PatchStats st = mesher.Run();
+                res.ops.quadsFormed += st.quadsFormed; res.ops.templates += st.templates; res.ops.swaps += st.swaps;
+                res.ops.splits += st.splits; res.ops.failures += st.failures; res.ops.pairedTriangles += st.pairedTriangles;
+                res.ops.doublets += st.doublets; res.ops.iterations += st.iterations;
+            }
+            // write back: vertex ids (global, or new), positions of moved interior nodes
+            std::vector<int> outId(mm.VertexCount(), 0);
+            for (int v = 0; v < mm.VertexCount(); ++v) {
+                if (!mm.vertAlive[v]) continue;
+                if (v < int(globalOf.size())) {
+                    int g = globalOf[v];
+                    outId[v] = g;
+                    used[g] = 1;
+                    if (!mm.vertFixed[v] && !(mm.pos[v] == pts[v])) {
+                        vertexNewPos[g] = int(movedTo.size());
+                        movedTo.push_back(mm.pos[v]);
+                    }
+                } else {
+                    outPoints.push_back(mm.pos[v]);
+                    outId[v] = -int(outPoints.size());
+                }
+            }
+            for (int f = 0; f < mm.FaceCount(); ++f) {
+                if (!mm.FaceAlive(f)) continue;
+                std::array<int, 5> of{mm.faceSize[f], 0, 0, 0, 0};
+                int h = mm.faceHe[f];
+                for (int k = 0; k < mm.faceSize[f]; ++k, h = mm.heNext[h]) of[1 + k] = outId[mm.Org(h)];
+                outFaces.push_back(of);
+                outQuality.push_back(patchQuality);
+                if (mm.faceSize[f] == 4) ++res.quads; else ++res.triangles;
+            }
+            for (size_t i = s; i < e; ++i)
+                for (int k = 0; k < 3; ++k) localOfSector[sectorOf[3 * order[i] + k]] = -1;
+            s = e;
+        }
+        Progress(99, "Q-Morph: writing the quad mesh");
+        WriteBack(outPoints, vertexNewPos, movedTo, outFaces, outQuality, used, hasQuality);
+        res.quality = QuadQuality::Measure(QuadQuality::FromFauxMesh(m));
+    }
+
+    // Replaces the faces of m by the new polygons (quads as faux pairs), front edges selected.
+    void WriteBack(const std::vector<P3> &outPoints, const std::vector<int> &vertexNewPos, const std::vector<P3> &movedTo,
+                   const std::vector<std::array<int, 5>> &outFaces, const std::vector<float> &outQuality,
+                   const std::vector<char> &used, bool hasQuality)
+    {
+        // front edges as vertex pairs (flips do not carry per-edge flags, pairs survive anything)
+        std::unordered_set<uint64_t> frontPairs;
+        for (size_t f = 0; f < tri.size(); ++f)
+            for (int k = 0; k < 3; ++k)
+                if (cut[3 * f + k]) frontPairs.insert(Key(tri[f][k], tri[f][(k + 1) % 3]));
+
+        for (size_t v = 0; v < m.vert.size(); ++v) {
+            if (m.vert[v].IsD()) continue;
+            if (vertexNewPos[v] >= 0) m.vert[v].P() = CoordType::Construct(movedTo[vertexNewPos[v]]);
+        }
+        const int firstNew = int(m.vert.size());
+        if (!outPoints.empty()) {
+            auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, outPoints.size());
+            for (size_t i = 0; i < outPoints.size(); ++i, ++vi) vi->P() = CoordType::Construct(outPoints[i]);
+        }
+        for (auto &f : m.face)
+            if (!f.IsD()) vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+        size_t triCount = 0;
+        for (auto &of : outFaces) triCount += of[0] == 4 ? 2 : 1;
+        auto resolve = [&](int id) { return id >= 0 ? id : firstNew + (-id - 1); };
+        auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, triCount);
+        auto setFace = [&](FaceType &f, int a, int b, int c, float q) {
+            f.V(0) = &m.vert[a];
+            f.V(1) = &m.vert[b];
+            f.V(2) = &m.vert[c];
+            f.Flags() = 0;
+            if (hasQuality) f.Q() = q;
+            const int vv[3] = {a, b, c};
+            for (int k = 0; k < 3; ++k)
+                if (frontPairs.count(Key(vv[k], vv[(k + 1) % 3]))) f.SetFaceEdgeS(k);
+        };
+        for (size_t i = 0; i < outFaces.size(); ++i) {
+            const auto &of = outFaces[i];
+            int a = resolve(of[1]), b = resolve(of[2]), c = resolve(of[3]);
+            if (of[0] == 3) {
+                setFace(*fi, a, b, c, outQuality[i]);
+                ++fi;
+                continue;
+            }
+            int d = resolve(of[4]);
+            // the diagonal giving the better pair of triangles (the larger smallest angle)
+            P3 pa = P3::Construct(m.vert[a].cP()), pb = P3::Construct(m.vert[b].cP()), pc = P3::Construct(m.vert[c].cP()),
+               pd = P3::Construct(m.vert[d].cP());
+            bool acDiagonal = std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
+            if (acDiagonal) {
+                setFace(*fi, a, b, c, outQuality[i]); fi->SetF(2); ++fi;  // c->a faux
+                setFace(*fi, a, c, d, outQuality[i]); fi->SetF(0); ++fi;  // a->c faux
+            } else {
+                setFace(*fi, b, c, d, outQuality[i]); fi->SetF(2); ++fi;  // d->b faux
+                setFace(*fi, b, d, a, outQuality[i]); fi->SetF(0); ++fi;  // b->d faux
+            }
+        }
+        std::vector<char> wasUsed(used.size(), 0);  // isolated input vertices stay as they are
+        for (auto &t : tri)
+            for (int k = 0; k < 3; ++k) wasUsed[t[k]] = 1;
+        for (size_t v = 0; v < used.size(); ++v)
+            if (wasUsed[v] && !used[v] && !m.vert[v].IsD()) vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[v]);
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+        vcg::tri::UpdateBounding<MeshType>::Box(m);
+        if (vcg::tri::HasFFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+        vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFace(m);
+    }
+
+    static double MinAngle(const P3 &a, const P3 &b, const P3 &c)
+    {
+        return std::min({qmorph::AngleBetween(b - a, c - a), qmorph::AngleBetween(a - b, c - b), qmorph::AngleBetween(a - c, b - c)});
+    }
+};
+
+}  // namespace vcg_ext
+
+#endif

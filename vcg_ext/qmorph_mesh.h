@@ -1,0 +1,466 @@
+// The working mesh of Q-Morph: an index-based half-edge mesh whose faces are triangles or quads,
+// with the local operations the advancing front needs (edge flip, edge split, merging the
+// triangles enclosed by four edges into one quad) and intrinsic geometry (corner angles, fan
+// walks, node normals, orientation tests in a node's tangent plane).
+//
+// Faces are counter-clockwise seen from outside. Elements are never reused once deleted, so an
+// index kept in a queue either still names the same element or is dead (checked on use).
+#ifndef VCG_EXT_QMORPH_MESH_H
+#define VCG_EXT_QMORPH_MESH_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <vcg/space/point3.h>
+
+namespace vcg_ext {
+namespace qmorph {
+
+typedef vcg::Point3<double> P3;
+
+inline double AngleBetween(const P3 &u, const P3 &v)
+{
+    double nu = u.Norm(), nv = v.Norm();
+    if (!(nu > 0 && nv > 0)) return 0;
+    double c = (u * v) / (nu * nv);
+    return std::acos(std::max(-1.0, std::min(1.0, c)));
+}
+
+class MixedMesh
+{
+public:
+    // vertices
+    std::vector<P3> pos;
+    std::vector<int> vertHe;      // an outgoing half-edge (a boundary one when the vertex is on the boundary)
+    std::vector<char> vertFixed;  // initial-front nodes: never moved, never removed
+    std::vector<char> vertAlive;
+    // half-edges
+    std::vector<int> heVert, heNext, hePrev, heTwin, heFace;  // heFace < 0: dead
+    std::vector<char> heInitial;  // on the initial front (patch boundary): never flipped, split or merged
+    // faces
+    std::vector<int> faceHe, faceSize;  // faceSize 0: dead
+    std::vector<int> faceLevel;         // quads: the row they were made in
+
+    int VertexCount() const { return int(pos.size()); }
+    int HalfEdgeCount() const { return int(heVert.size()); }
+    int FaceCount() const { return int(faceHe.size()); }
+
+    bool HeAlive(int h) const { return h >= 0 && heFace[h] >= 0; }
+    bool FaceAlive(int f) const { return f >= 0 && faceSize[f] > 0; }
+    bool IsTri(int f) const { return faceSize[f] == 3; }
+    bool IsQuad(int f) const { return faceSize[f] == 4; }
+    int Org(int h) const { return heVert[h]; }
+    int Dst(int h) const { return heVert[heNext[h]]; }
+    P3 Vec(int h) const { return pos[Dst(h)] - pos[Org(h)]; }
+    double Length(int h) const { return Vec(h).Norm(); }
+
+    // Builds from counter-clockwise triangles; every edge must have at most two faces. Half-edges
+    // flagged in `cut` (index 3*t+k: edge k of triangle t) are not joined to their twin. Boundary
+    // half-edges are the initial front: marked initial, their nodes fixed.
+    void Build(const std::vector<P3> &points, const std::vector<std::array<int, 3>> &tris,
+               const std::vector<char> &cut = std::vector<char>())
+    {
+        pos = points;
+        vertHe.assign(pos.size(), -1);
+        vertFixed.assign(pos.size(), 0);
+        vertAlive.assign(pos.size(), 1);
+        heVert.clear(); heNext.clear(); hePrev.clear(); heTwin.clear(); heFace.clear(); heInitial.clear();
+        faceHe.clear(); faceSize.clear(); faceLevel.clear();
+        for (auto &t : tris) AddFace({t[0], t[1], t[2]}, 3);
+        struct Key { int a, b, h; };
+        std::vector<Key> keys;
+        keys.reserve(heVert.size());
+        for (int h = 0; h < HalfEdgeCount(); ++h)
+            if (cut.empty() || !cut[h]) keys.push_back({std::min(Org(h), Dst(h)), std::max(Org(h), Dst(h)), h});
+        std::sort(keys.begin(), keys.end(), [](const Key &x, const Key &y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+        for (size_t i = 0; i + 1 < keys.size(); ++i)
+            if (keys[i].a == keys[i + 1].a && keys[i].b == keys[i + 1].b) {
+                heTwin[keys[i].h] = keys[i + 1].h;
+                heTwin[keys[i + 1].h] = keys[i].h;
+                ++i;
+            }
+        for (int h = 0; h < HalfEdgeCount(); ++h)
+            if (heTwin[h] < 0) { heInitial[h] = 1; vertFixed[Org(h)] = 1; vertFixed[Dst(h)] = 1; }
+        for (int h = 0; h < HalfEdgeCount(); ++h) SetVertexHe(Org(h), h);
+    }
+
+    // ---- navigation -------------------------------------------------------------------------
+    // Around the origin of h: the next outgoing half-edge counter-clockwise / clockwise (-1 at the boundary).
+    int RotateCCW(int h) const { return heTwin[hePrev[h]]; }
+    int RotateCW(int h) const { return heTwin[h] < 0 ? -1 : heNext[heTwin[h]]; }
+
+    template <class F>
+    void ForEachOutgoing(int v, F f) const
+    {
+        int start = vertHe[v];
+        if (start < 0) return;
+        int h = start;
+        do {  // vertHe is the clockwise-most half-edge on the boundary: walk counter-clockwise
+            f(h);
+            h = RotateCCW(h);
+        } while (h >= 0 && h != start);
+    }
+
+    // The half-edge a->b, or -1 (also when only b->a exists: a boundary edge seen from the other side).
+    int FindHalfEdge(int a, int b) const
+    {
+        int found = -1;
+        ForEachOutgoing(a, [&](int h) { if (Dst(h) == b) found = h; });
+        return found;
+    }
+    bool EdgeExists(int a, int b) const { return FindHalfEdge(a, b) >= 0 || FindHalfEdge(b, a) >= 0; }
+
+    int Valence(int v) const
+    {
+        int n = 0, last = -1;
+        ForEachOutgoing(v, [&](int h) { ++n; last = h; });
+        if (last >= 0 && heTwin[hePrev[last]] < 0) ++n;  // boundary: one more edge than faces
+        return n;
+    }
+
+    // vertHe is the clockwise-most outgoing half-edge: on the boundary it has no twin.
+    bool OnBoundary(int v) const { return vertHe[v] >= 0 && heTwin[vertHe[v]] < 0; }
+
+    // Corner angle of the face of h at the origin of h.
+    double CornerAngle(int h) const { return AngleBetween(pos[Dst(h)] - pos[Org(h)], pos[Org(hePrev[h])] - pos[Org(h)]); }
+
+    // Area-weighted normal of a face (Newell's formula: also right for non-planar quads).
+    P3 FaceNormal(int f) const
+    {
+        P3 n(0, 0, 0);
+        int h = faceHe[f];
+        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) {
+            const P3 &a = pos[Org(h)], &b = pos[Dst(h)];
+            n += P3((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]), (a[0] - b[0]) * (a[1] + b[1]));
+        }
+        return n * 0.5;
+    }
+    P3 FaceCentroid(int f) const
+    {
+        P3 c(0, 0, 0);
+        int h = faceHe[f];
+        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) c += pos[Org(h)];
+        return c / double(faceSize[f]);
+    }
+
+    // Unit normal of a node from its faces (all in one patch: never averaged across a crease).
+    P3 VertexNormal(int v) const
+    {
+        P3 n(0, 0, 0);
+        ForEachOutgoing(v, [&](int h) { n += FaceNormal(heFace[h]); });
+        double l = n.Norm();
+        return l > 0 ? n / l : P3(0, 0, 1);
+    }
+
+    // Does face f keep its orientation against normal `n` (every corner turns left)?
+    bool FaceIsPositive(int f, const P3 &n) const
+    {
+        int h = faceHe[f];
+        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) {
+            P3 a = pos[Org(hePrev[h])], b = pos[Org(h)], c = pos[Dst(h)];
+            if (!(((b - a) ^ (c - b)) * n > 0)) return false;
+        }
+        return true;
+    }
+
+    // Scaled Jacobian of a quad: min over corners of (e1 x e2).n / (|e1||e2|).
+    double QuadScaledJacobian(int f) const
+    {
+        P3 n = FaceNormal(f);
+        double l = n.Norm();
+        if (!(l > 0)) return -1;
+        n /= l;
+        double worst = 1;
+        int h = faceHe[f];
+        for (int k = 0; k < 4; ++k, h = heNext[h]) {
+            P3 e1 = Vec(h), e2 = pos[Org(hePrev[h])] - pos[Org(h)];
+            double d = e1.Norm() * e2.Norm();
+            worst = std::min(worst, d > 0 ? ((e1 ^ e2) * n) / d : -1.0);
+        }
+        return worst;
+    }
+
+    // ---- construction -------------------------------------------------------------------------
+    int AddVertex(const P3 &p)
+    {
+        pos.push_back(p);
+        vertHe.push_back(-1);
+        vertFixed.push_back(0);
+        vertAlive.push_back(1);
+        return VertexCount() - 1;
+    }
+
+    // Adds a face over the given vertices with fresh half-edges (twins left unset).
+    int AddFace(const std::array<int, 4> &v, int n)
+    {
+        int f = FaceCount();
+        int h0 = HalfEdgeCount();
+        for (int k = 0; k < n; ++k) {
+            heVert.push_back(v[k]);
+            heNext.push_back(h0 + (k + 1) % n);
+            hePrev.push_back(h0 + (k + n - 1) % n);
+            heTwin.push_back(-1);
+            heFace.push_back(f);
+            heInitial.push_back(0);
+        }
+        faceHe.push_back(h0);
+        faceSize.push_back(n);
+        faceLevel.push_back(0);
+        return f;
+    }
+
+    void Link(int a, int b)
+    {
+        if (a >= 0) heTwin[a] = b;
+        if (b >= 0) heTwin[b] = a;
+    }
+
+    // Keeps vertHe[v] on the clockwise-most outgoing half-edge when v is on the boundary.
+    void SetVertexHe(int v, int h)
+    {
+        vertHe[v] = h;
+        int g = h, guard = 0;
+        while (heTwin[g] >= 0 && guard++ < 100000) {
+            g = heNext[heTwin[g]];
+            if (g == h) return;  // interior vertex
+        }
+        vertHe[v] = g;
+    }
+
+    // ---- edge flip ----------------------------------------------------------------------------
+    // Flip of the edge of h between two triangles (a b c) and (b a d) into (c a d) and (d b c).
+    // `n` is the local normal used for the convexity test. Refuses constrained edges.
+    bool CanFlip(int h) const
+    {
+        int t = heTwin[h];
+        if (t < 0 || heInitial[h] || !IsTri(heFace[h]) || !IsTri(heFace[t])) return false;
+        int a = Org(h), b = Dst(h), c = Org(hePrev[h]), d = Org(hePrev[t]);
+        if (c == d || EdgeExists(c, d)) return false;
+        P3 n = (FaceNormal(heFace[h]) + FaceNormal(heFace[t]));
+        if (!(n.Norm() > 0)) return false;
+        // the new triangles (c a d) and (d b c) must be positive
+        auto positive = [&](int x, int y, int z) { return ((pos[y] - pos[x]) ^ (pos[z] - pos[x])) * n > 0; };
+        return positive(c, a, d) && positive(d, b, c);
+    }
+
+    void Flip(int h)
+    {
+        int t = heTwin[h];
+        int f = heFace[h], g = heFace[t];
+        int hn = heNext[h], hp = hePrev[h], tn = heNext[t], tp = hePrev[t];
+        int a = Org(h), b = Dst(h), c = Org(hp), d = Org(tp);
+        // face f becomes (c a d): hp (c->a), tn (a->d), h (d->c)
+        // face g becomes (d b c): tp (d->b), hn (b->c), t (c->d)
+        heVert[h] = d;
+        heVert[t] = c;
+        SetFace(f, {hp, tn, h});
+        SetFace(g, {tp, hn, t});
+        if (vertHe[a] == h) vertHe[a] = tn;
+        if (vertHe[b] == t) vertHe[b] = hn;
+        SetVertexHe(a, vertHe[a]);
+        SetVertexHe(b, vertHe[b]);
+    }
+
+    // ---- edge split ---------------------------------------------------------------------------
+    // Splits the edge of h (triangles on both sides, or a boundary on one side) at p; returns the
+    // new vertex. The half-edge h keeps its origin and now ends at the new vertex.
+    int SplitEdge(int h, const P3 &p)
+    {
+        int t = heTwin[h];
+        int m = AddVertex(p);
+        int a = Org(h), b = Dst(h);
+        // side of h: triangle (a b c) -> (a m c) + (m b c)
+        int hNew = SplitSide(h, m);           // hNew: m->b
+        int tNew = t >= 0 ? SplitSide(t, m) : -1;  // tNew: m->a
+        if (t >= 0) {
+            Link(h, tNew);  // a->m with m->a
+            Link(t, hNew);  // b->m with m->b
+        }
+        if (t < 0) heInitial[hNew] = heInitial[h];
+        vertHe[m] = hNew;
+        SetVertexHe(m, hNew);
+        SetVertexHe(a, vertHe[a]);
+        SetVertexHe(b, vertHe[b]);
+        return m;
+    }
+
+    // ---- merging into a quad ------------------------------------------------------------------
+    // The four half-edges a->b, b->c, c->d, d->a bound (on their left) a disk of triangles.
+    // Collects it; false when they do not (another front or a quad is reached, or the count of
+    // faces does not fit a disk with four boundary nodes).
+    bool EnclosedTriangles(const std::array<int, 4> &loop, std::vector<int> &faces, std::vector<int> &inner) const
+    {
+        faces.clear();
+        inner.clear();
+        std::vector<int> stack{heFace[loop[0]]};
+        auto isLoop = [&](int h) { return h == loop[0] || h == loop[1] || h == loop[2] || h == loop[3]; };
+        for (int h : loop)
+            if (!IsTri(heFace[h])) return false;
+        faces.push_back(stack[0]);
+        const size_t cap = 4096;  // a quad never encloses more; bounds the work on a bad loop
+        while (!stack.empty()) {
+            int f = stack.back();
+            stack.pop_back();
+            int h = faceHe[f];
+            for (int k = 0; k < 3; ++k, h = heNext[h]) {
+                if (isLoop(h)) continue;
+                int t = heTwin[h];
+                if (t < 0 || heInitial[h] || !IsTri(heFace[t])) return false;  // leaked out of the loop
+                int g = heFace[t];
+                if (std::find(faces.begin(), faces.end(), g) == faces.end()) {
+                    if (faces.size() >= cap) return false;
+                    faces.push_back(g);
+                    stack.push_back(g);
+                }
+            }
+        }
+        const int corners[4] = {Org(loop[0]), Org(loop[1]), Org(loop[2]), Org(loop[3])};
+        for (int f : faces) {
+            int h = faceHe[f];
+            for (int k = 0; k < 3; ++k, h = heNext[h]) {
+                int v = Org(h);
+                if (std::find(corners, corners + 4, v) == corners + 4 && std::find(inner.begin(), inner.end(), v) == inner.end())
+                    inner.push_back(v);
+            }
+        }
+        for (int v : inner)
+            if (vertFixed[v]) return false;
+        return int(faces.size()) == 2 * int(inner.size()) + 2;  // Euler: disk with 4 boundary nodes
+    }
+
+    // Replaces the faces of a disk-shaped region bounded (on their left) by the half-edges
+    // `loop`, in order, by new polygons given as lists of loop positions (counter-clockwise).
+    // Loop half-edges are reused for the polygon sides they cover; diagonals get new half-edges.
+    // Inner vertices are removed. Returns the first new face.
+    int ReplaceRegion(const std::vector<int> &loop, const std::vector<int> &faces, const std::vector<int> &inner,
+                      const std::vector<std::vector<int>> &polygons, int level)
+    {
+        for (int f : faces) {
+            int h = faceHe[f];
+            for (int k = 0, n = faceSize[f]; k < n; ++k) {
+                int nx = heNext[h];
+                if (std::find(loop.begin(), loop.end(), h) == loop.end()) heFace[h] = -1;
+                h = nx;
+            }
+            faceSize[f] = 0;
+        }
+        for (int v : inner) { vertAlive[v] = 0; vertHe[v] = -1; }
+        const int n = int(loop.size());
+        std::vector<std::array<int, 3>> diagonals;  // (from position, to position, half-edge)
+        int first = FaceCount();
+        for (const auto &poly : polygons) {
+            int f = FaceCount();
+            faceHe.push_back(-1);
+            faceSize.push_back(int(poly.size()));
+            faceLevel.push_back(level);
+            std::vector<int> hs;
+            for (size_t k = 0; k < poly.size(); ++k) {
+                int i = poly[k], j = poly[(k + 1) % poly.size()];
+                if (j == (i + 1) % n) { hs.push_back(loop[i]); continue; }
+                int h = HalfEdgeCount();
+                heVert.push_back(Org(loop[i]));
+                heNext.push_back(-1); hePrev.push_back(-1); heTwin.push_back(-1); heFace.push_back(-1);
+                heInitial.push_back(0);
+                hs.push_back(h);
+                for (auto &d : diagonals)
+                    if (d[0] == j && d[1] == i) Link(d[2], h);
+                diagonals.push_back({i, j, h});
+            }
+            for (size_t k = 0; k < hs.size(); ++k) {
+                heNext[hs[k]] = hs[(k + 1) % hs.size()];
+                hePrev[hs[k]] = hs[(k + hs.size() - 1) % hs.size()];
+                heFace[hs[k]] = f;
+            }
+            faceHe[f] = hs[0];
+        }
+        for (int h : loop) SetVertexHe(Org(h), h);
+        return first;
+    }
+
+    // Replaces the enclosed triangles by the quad (a b c d); inner nodes are removed.
+    int MakeQuad(const std::array<int, 4> &loop, const std::vector<int> &faces, const std::vector<int> &inner, int level)
+    {
+        return ReplaceRegion({loop[0], loop[1], loop[2], loop[3]}, faces, inner, {{0, 1, 2, 3}}, level);
+    }
+
+    // Replaces the two triangles sharing the edge of h by one quad; returns it.
+    int MergeTriangles(int h, int level)
+    {
+        int t = heTwin[h];
+        return ReplaceRegion({heNext[h], hePrev[h], heNext[t], hePrev[t]}, {heFace[h], heFace[t]}, {}, {{0, 1, 2, 3}}, level);
+    }
+
+    // Removes a valence-2 interior node shared by two quads (a "doublet"): the quads become one.
+    bool DissolveDoublet(int v)
+    {
+        if (vertFixed[v] || !vertAlive[v] || OnBoundary(v)) return false;
+        std::vector<int> out;
+        ForEachOutgoing(v, [&](int h) { out.push_back(h); });
+        if (out.size() != 2) return false;
+        int f = heFace[out[0]], g = heFace[out[1]];
+        if (!IsQuad(f) || !IsQuad(g) || f == g) return false;
+        // quad f: v->x ... ->v ; its two edges at v are out[0] and prev(out[0])
+        int h1 = out[0], h2 = out[1];
+        int p1 = hePrev[h1], p2 = hePrev[h2];  // p1: y->v in f (twin of h2), p2: x->v in g (twin of h1)
+        if (heTwin[p1] != h2 || heTwin[p2] != h1) return false;
+        // the hexagon minus v: f contributes next(h1), next(next(h1)); g contributes next(h2), next(next(h2))
+        std::vector<int> loop{heNext[h1], heNext[heNext[h1]], heNext[h2], heNext[heNext[h2]]};
+        int xs[4] = {Org(loop[0]), Org(loop[1]), Org(loop[2]), Org(loop[3])};
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j)
+                if (xs[i] == xs[j]) return false;
+        ReplaceRegion(loop, {f, g}, {v}, {{0, 1, 2, 3}}, std::max(faceLevel[f], faceLevel[g]));
+        return true;
+    }
+
+private:
+    void SetFace(int f, std::initializer_list<int> hs)
+    {
+        std::vector<int> v(hs);
+        for (size_t k = 0; k < v.size(); ++k) {
+            heNext[v[k]] = v[(k + 1) % v.size()];
+            hePrev[v[k]] = v[(k + v.size() - 1) % v.size()];
+            heFace[v[k]] = f;
+        }
+        faceHe[f] = v[0];
+        faceSize[f] = int(v.size());
+    }
+
+    // In the triangle of h = (a->b), (a b c) becomes (a m c) + (m b c); returns the new m->b.
+    int SplitSide(int h, int m)
+    {
+        int f = heFace[h];
+        int hn = heNext[h], hp = hePrev[h];  // b->c, c->a
+        int c = Org(hp);
+        int g = FaceCount();
+        faceHe.push_back(-1);
+        faceSize.push_back(3);
+        faceLevel.push_back(0);
+        int h0 = HalfEdgeCount();
+        // new half-edges: m->b (h0), c->m (h0+1) in g; m->c (h0+2) in f
+        for (int k = 0; k < 3; ++k) {
+            heVert.push_back(k == 1 ? c : m);
+            heNext.push_back(-1);
+            hePrev.push_back(-1);
+            heTwin.push_back(-1);
+            heFace.push_back(-1);
+            heInitial.push_back(0);
+        }
+        int mb = h0, cm = h0 + 1, mc = h0 + 2;
+        // f: a->m (h, its destination becomes m through next), m->c, c->a
+        SetFace(f, {h, mc, hp});
+        // g: m->b, b->c, c->m
+        SetFace(g, {mb, hn, cm});
+        Link(mc, cm);
+        vertHe[c] = vertHe[c] < 0 ? hp : vertHe[c];
+        SetVertexHe(c, vertHe[c]);
+        return mb;
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif

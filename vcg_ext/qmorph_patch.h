@@ -1,0 +1,538 @@
+// Q-Morph (Owen, Staten, Canann, Saigal 1999) on one patch: a triangulated surface piece whose
+// boundary is the initial front. Every geometric decision is made on the surface itself: front
+// angles are sums of triangle corner angles, side directions are rotations inside a triangle,
+// orientation tests use the node's normal from the patch's own faces, and smoothing moves nodes
+// in their tangent plane and projects them back onto the patch's input surface (no shrinkage).
+//
+// Per front edge A->B (highest state, lowest level first):
+//   1. side edges at A and B: the adjacent front edge when the front angle is closed (< 3pi/4),
+//      else an existing edge within pi/6 of the ideal direction, else a swap creating one, else
+//      a split of the edge the ideal direction crosses; long sides are split to the base length;
+//   2. the top edge between the side tips, recovered by swaps;
+//   3. the triangles enclosed by base, sides and top merged into one quad (inner nodes removed);
+//   4. local smoothing of the new front nodes and their triangle neighbours.
+// Loops of <= 6 edges are closed by templates (a quad; a quad and a triangle; two quads). The
+// initial front (the patch boundary) is never swapped, split or moved.
+// Afterwards: leftover triangle pairs merged where the quad is good, doublets dissolved, and a
+// final tangent-plane smoothing.
+#ifndef VCG_EXT_QMORPH_PATCH_H
+#define VCG_EXT_QMORPH_PATCH_H
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "qmorph_front.h"
+#include "qmorph_mesh.h"
+#include "surface_projector.h"
+
+namespace vcg_ext {
+namespace qmorph {
+
+struct PatchParams {
+    double closedAngle = 3 * M_PI / 4;  // a front angle below this closes that end (Owen: 3pi/4)
+    double sideTolerance = M_PI / 6;    // existing edges within this of the ideal side are used
+    double longSideFactor = std::sqrt(3.0);  // sides longer than this times the base are split
+    double minQuadJacobian = 0.05;      // a quad is formed only when its scaled Jacobian exceeds this
+    double pairMinJacobian = 0.3;       // leftover triangle pairs are merged above this quality
+    int finalSmoothing = 5;             // tangent-plane smoothing sweeps at the end
+    bool smoothing = true;              // local smoothing after each quad + final sweeps
+};
+
+struct PatchStats {
+    int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
+    int pairedTriangles = 0, doublets = 0, iterations = 0;
+};
+
+class PatchMesher
+{
+public:
+    PatchMesher(MixedMesh &mesh, const SurfaceProjector &surface, std::vector<int> &homeTriangle, const PatchParams &params)
+        : m(mesh), front(mesh), proj(surface), home(homeTriangle), p(params)
+    {
+        home.resize(m.VertexCount(), 0);
+        vertexCap = 4 * m.VertexCount() + 64;
+    }
+
+    PatchStats Run()
+    {
+        int triangles = 0;
+        for (int f = 0; f < m.FaceCount(); ++f) triangles += m.FaceAlive(f) && m.IsTri(f);
+        const long cap = 40L * triangles + 1000;
+        failedAt.assign(m.HalfEdgeCount(), -1);
+        for (int sweep = 0; sweep < 4; ++sweep) {
+            int before = successes;
+            PushAllFront();
+            while (!queue.Empty() && stats.iterations < cap) {
+                ++stats.iterations;
+                FrontEntry e = queue.Pop();
+                int h = e.he;
+                if (!front.IsFront(h)) continue;
+                int state = front.State(h, p.closedAngle), level = front.Level(h);
+                if (FrontQueue::Rank(state) != e.rank || level != e.level) { queue.Push(h, state, level); continue; }
+                if (h < int(failedAt.size()) && failedAt[h] == successes) continue;
+                int len = front.LoopLength(h, 6);
+                bool ok = (len > 0 && CloseSmallLoop(h, len)) || (len != 3 && FormQuad(h, state));
+                if (ok) ++successes;
+                else {
+                    if (int(failedAt.size()) < m.HalfEdgeCount()) failedAt.resize(m.HalfEdgeCount(), -1);
+                    failedAt[h] = successes;
+                    ++stats.failures;
+                }
+            }
+            if (successes == before) break;
+        }
+        PairLeftoverTriangles();
+        DissolveDoublets();
+        if (p.smoothing)
+            for (int it = 0; it < p.finalSmoothing; ++it) SmoothAll();
+        return stats;
+    }
+
+private:
+    MixedMesh &m;
+    Front front;
+    const SurfaceProjector &proj;
+    std::vector<int> &home;
+    const PatchParams &p;
+    FrontQueue queue;
+    PatchStats stats;
+    std::vector<int> failedAt;  // per half-edge: success count when it last failed
+    int successes = 0;
+    int vertexCap;
+
+    // ---- queue ----------------------------------------------------------------------------------
+    void PushAllFront()
+    {
+        for (int h = 0; h < m.HalfEdgeCount(); ++h)
+            if (front.IsFront(h)) queue.Push(h, front.State(h, p.closedAngle), front.Level(h));
+    }
+    void PushIfFront(int h)
+    {
+        if (h >= 0 && front.IsFront(h)) queue.Push(h, front.State(h, p.closedAngle), front.Level(h));
+    }
+    // Front edges whose state may have changed around node v.
+    void PushAround(int v)
+    {
+        if (!m.vertAlive[v]) return;
+        m.ForEachOutgoing(v, [&](int g) {
+            PushIfFront(g);
+            PushIfFront(m.hePrev[g]);
+            if (m.heTwin[g] >= 0) PushIfFront(m.heTwin[g]);
+        });
+    }
+
+    // ---- geometry helpers -----------------------------------------------------------------------
+    // Scaled Jacobian of the quad (a b c d) against reference normal n (<= 0: inverted).
+    double QuadQuality(int a, int b, int c, int d, const P3 &n) const
+    {
+        const int v[4] = {a, b, c, d};
+        P3 N(0, 0, 0);
+        for (int k = 0; k < 4; ++k) N += m.pos[v[k]] ^ m.pos[v[(k + 1) % 4]];
+        double l = N.Norm();
+        if (!(l > 0) || N * n <= 0) return -1;
+        N /= l;
+        double worst = 1;
+        for (int k = 0; k < 4; ++k) {
+            P3 e1 = m.pos[v[(k + 1) % 4]] - m.pos[v[k]], e2 = m.pos[v[(k + 3) % 4]] - m.pos[v[k]];
+            double d = e1.Norm() * e2.Norm();
+            worst = std::min(worst, d > 0 ? ((e1 ^ e2) * N) / d : -1.0);
+        }
+        return worst;
+    }
+    bool TriPositive(int a, int b, int c, const P3 &n) const
+    {
+        return ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
+    }
+
+    int NewVertexOnEdge(int h, const P3 &point)
+    {
+        int from = m.Org(h);
+        int v = m.SplitEdge(h, point);
+        home.resize(m.VertexCount(), 0);
+        home[v] = home[from];
+        TryMove(v, proj.Project(m.pos[v], home[v]));  // a point of a current edge: back onto the input surface
+        ++stats.splits;
+        return v;
+    }
+
+    bool Splittable(int h) const
+    {
+        int t = m.heTwin[h];
+        return t >= 0 && !m.heInitial[h] && m.IsTri(m.heFace[h]) && m.IsTri(m.heFace[t]) && m.VertexCount() < vertexCap;
+    }
+
+    // ---- side edges -----------------------------------------------------------------------------
+    // Chooses (creating it if needed) the side edge at the open end of front edge h; returns its
+    // far node or -1. `exclude` is a node the side must not reach; `keepA/keepB` an edge that must
+    // not be swapped or split.
+    int ChooseSide(int h, bool leftEnd, int exclude, int keepA, int keepB)
+    {
+        Fan fan;
+        if (!(leftEnd ? front.LeftFan(h, fan) : front.RightFan(h, fan))) return -1;
+        const int node = fan.node;
+        const double theta = fan.Total();
+        const double ideal = std::min(theta / 2, M_PI / 2);
+        const double base = m.Length(h);
+        auto isKept = [&](int e) {
+            int a = m.Org(e), b = m.Dst(e);
+            return (a == keepA && b == keepB) || (a == keepB && b == keepA);
+        };
+        int best = -1;
+        for (int i = 1; i + 1 < int(fan.edges.size()); ++i) {
+            if (fan.edges[i].vertex == exclude) continue;
+            if (best < 0 || std::fabs(fan.edges[i].angle - ideal) < std::fabs(fan.edges[best].angle - ideal)) best = i;
+        }
+        int tip = -1;
+        if (best >= 0 && std::fabs(fan.edges[best].angle - ideal) < p.sideTolerance) tip = fan.edges[best].vertex;
+        if (tip < 0) {
+            int k = 0;
+            while (k + 1 < int(fan.gaps.size()) && fan.gaps[k].angleEnd < ideal) ++k;
+            const FanGap &gap = fan.gaps[k];
+            int e = gap.opposite;
+            int x = fan.edges[k].vertex, y = fan.edges[k + 1].vertex;
+            // 1. swap the crossed edge
+            if (!isKept(e) && m.CanFlip(e)) {
+                m.Flip(e);
+                ++stats.swaps;
+                int z = m.Org(e) == node ? m.Dst(e) : m.Org(e);  // the flipped edge joins node and z
+                int hz = m.FindHalfEdge(node, z);
+                double az = hz >= 0 ? gap.angleStart + AngleBetween(m.pos[x] - m.pos[node], m.pos[z] - m.pos[node]) : 1e9;
+                if (z != exclude && std::fabs(az - ideal) < p.sideTolerance) tip = z;
+                else { m.Flip(e); ++stats.swaps; }  // undo
+            }
+            // 2. split the crossed edge where the ideal direction meets it
+            if (tip < 0 && !isKept(e) && Splittable(e)) {
+                P3 o = m.pos[node], u = m.pos[x] - o, w = m.pos[y] - o;
+                double ul = u.Norm();
+                P3 uh = u / ul;
+                P3 wp = w - uh * (w * uh);
+                double wl = wp.Norm();
+                if (ul > 0 && wl > 0) {
+                    P3 vh = wp / wl;
+                    double delta = std::max(0.0, ideal - gap.angleStart);
+                    double dx = std::cos(delta), dy = std::sin(delta);  // direction in (uh, vh)
+                    double X0 = ul, X1 = 0, Ex = w * uh - ul, Ey = w * vh;
+                    double den = Ex * dy - Ey * dx;  // cross(E, d)
+                    if (std::fabs(den) > 1e-300) {
+                        double t = (dx * X1 - dy * X0) / den;  // cross(d, X) / cross(E, d)
+                        t = std::max(0.15, std::min(0.85, t));
+                        P3 point = m.pos[x] + (m.pos[y] - m.pos[x]) * t;
+                        // SplitEdge keeps e's origin; point is on x->y, e may be y->x
+                        tip = NewVertexOnEdge(e, point);
+                    }
+                }
+            }
+            if (tip < 0 && best >= 0 && std::fabs(fan.edges[best].angle - ideal) < 2 * p.sideTolerance)
+                tip = fan.edges[best].vertex;  // no swap or split possible: the nearest existing edge
+        }
+        if (tip < 0 || tip == exclude) return -1;
+        // long side: split it to the base length
+        int hs = m.FindHalfEdge(node, tip);
+        if (hs >= 0 && m.Length(hs) > p.longSideFactor * base && !isKept(hs) && Splittable(hs)) {
+            P3 point = m.pos[node] + (m.pos[tip] - m.pos[node]) * (base / m.Length(hs));
+            tip = NewVertexOnEdge(hs, point);
+        }
+        return tip;
+    }
+
+    // ---- top edge recovery ----------------------------------------------------------------------
+    // Swaps edges crossing the segment d-c (seen in the tangent plane at d, then at c) until the
+    // edge exists. Edges in `kept` (vertex pairs) are never swapped.
+    bool RecoverEdge(int d, int c, const std::vector<std::pair<int, int>> &kept)
+    {
+        auto isKept = [&](int e) {
+            int a = m.Org(e), b = m.Dst(e);
+            for (auto &k : kept)
+                if ((a == k.first && b == k.second) || (a == k.second && b == k.first)) return true;
+            return false;
+        };
+        for (int iter = 0; iter < 24; ++iter) {
+            if (m.EdgeExists(d, c)) return true;
+            bool flipped = false;
+            for (int side = 0; side < 2 && !flipped; ++side) {
+                int from = side ? c : d, to = side ? d : c;
+                int e = CrossedEdge(from, to);
+                if (e >= 0 && !isKept(e) && m.CanFlip(e)) { m.Flip(e); ++stats.swaps; flipped = true; }
+            }
+            if (!flipped) return false;
+        }
+        return m.EdgeExists(d, c);
+    }
+
+    // The side, opposite `from`, of the triangle at `from` that the direction to `to` passes through.
+    int CrossedEdge(int from, int to) const
+    {
+        P3 n = m.VertexNormal(from);
+        auto tangent = [&](const P3 &v) { return v - n * (v * n); };
+        P3 c = tangent(m.pos[to] - m.pos[from]);
+        int found = -1;
+        m.ForEachOutgoing(from, [&](int g) {
+            if (found >= 0 || !m.IsTri(m.heFace[g])) return;
+            P3 x = tangent(m.pos[m.Dst(g)] - m.pos[from]), y = tangent(m.pos[m.Org(m.hePrev[g])] - m.pos[from]);
+            if ((x ^ c) * n > 0 && (c ^ y) * n > 0) found = m.heNext[g];
+        });
+        return found;
+    }
+
+    // ---- quad formation -------------------------------------------------------------------------
+    bool FormQuad(int h, int state)
+    {
+        const int a = m.Org(h), b = m.Dst(h);
+        Fan fan;
+        int d = -1, c = -1;
+        if (state & 1) {
+            if (!front.LeftFan(h, fan)) return false;
+            d = fan.edges.back().vertex;
+        }
+        if (state & 2) {
+            if (!front.RightFan(h, fan)) return false;
+            c = fan.edges.back().vertex;
+        }
+        if (d < 0) d = ChooseSide(h, true, c >= 0 ? c : b, b, c);
+        if (d < 0) return false;
+        if (c < 0) c = ChooseSide(h, false, d, a, d);
+        if (c < 0 || c == d || c == a || d == b) return false;
+        if (!m.EdgeExists(a, d) || !m.EdgeExists(b, c)) return false;
+        if (!RecoverEdge(d, c, {{a, b}, {a, d}, {b, c}})) return false;
+        std::array<int, 4> loop{h, m.FindHalfEdge(b, c), m.FindHalfEdge(c, d), m.FindHalfEdge(d, a)};
+        for (int e : loop)
+            if (e < 0 || !m.IsTri(m.heFace[e])) return false;
+        P3 n = m.VertexNormal(a) + m.VertexNormal(b);
+        if (QuadQuality(a, b, c, d, n) <= p.minQuadJacobian) return false;
+        std::vector<int> faces, inner;
+        if (!m.EnclosedTriangles(loop, faces, inner)) return false;
+        int q = m.MakeQuad(loop, faces, inner, front.Level(h) + 1);
+        ++stats.quadsFormed;
+        AfterNewFaces({q}, {c, d});
+        return true;
+    }
+
+    // Smooths the new front nodes and their triangle neighbours; re-queues the front nearby.
+    void AfterNewFaces(const std::vector<int> &faces, const std::vector<int> &nodes)
+    {
+        if (p.smoothing) {
+            std::vector<int> moved;
+            for (int v : nodes)
+                if (m.vertAlive[v] && !m.vertFixed[v]) moved.push_back(v);
+            for (int v : nodes)
+                if (m.vertAlive[v])
+                    m.ForEachOutgoing(v, [&](int g) {
+                        int w = m.Dst(g);
+                        if (!m.vertFixed[w] && AllTriangles(w) && std::find(moved.begin(), moved.end(), w) == moved.end())
+                            moved.push_back(w);
+                    });
+            for (int pass = 0; pass < 2; ++pass)
+                for (int v : moved) SmoothNode(v);
+        }
+        for (int f : faces) {
+            int g = m.faceHe[f];
+            for (int k = 0; k < m.faceSize[f]; ++k, g = m.heNext[g]) {
+                if (m.heTwin[g] >= 0) PushIfFront(m.heTwin[g]);
+                PushAround(m.Org(g));
+            }
+        }
+    }
+
+    bool AllTriangles(int v) const
+    {
+        bool all = true;
+        m.ForEachOutgoing(v, [&](int g) { all = all && m.IsTri(m.heFace[g]); });
+        return all;
+    }
+
+    // ---- small loops ----------------------------------------------------------------------------
+    bool CloseSmallLoop(int h, int len)
+    {
+        if (len < 4) return false;  // a triangle (or a 2-edge lens) stays as it is
+        std::vector<int> loop;
+        front.Loop(h, loop);
+        if (int(loop.size()) != len) return false;
+        for (size_t i = 0; i < loop.size(); ++i)
+            for (size_t j = i + 1; j < loop.size(); ++j)
+                if (m.Org(loop[i]) == m.Org(loop[j])) return false;  // the loop touches itself
+        std::vector<int> faces, inner;
+        if (!RegionInside(loop, faces, inner)) return false;
+        if (inner.size() > 2) return false;  // a large region behind a short loop: advance into it instead
+        P3 n(0, 0, 0);
+        for (int f : faces) n += m.FaceNormal(f);
+        std::vector<int> v;
+        for (int e : loop) v.push_back(m.Org(e));
+        const int L = len;
+        auto at = [&](int i) { return v[((i % L) + L) % L]; };
+        std::vector<std::vector<int>> bestPolys;
+        double bestQ = p.minQuadJacobian;
+        if (L == 4) {
+            double q = QuadQuality(v[0], v[1], v[2], v[3], n);
+            if (q > bestQ) { bestQ = q; bestPolys = {{0, 1, 2, 3}}; }
+        } else if (L == 5) {
+            for (int i = 0; i < 5; ++i) {
+                double q = QuadQuality(at(i), at(i + 1), at(i + 2), at(i + 3), n);
+                if (q > bestQ && TriPositive(at(i + 3), at(i + 4), at(i), n)) {
+                    bestQ = q;
+                    bestPolys = {{i, (i + 1) % 5, (i + 2) % 5, (i + 3) % 5}, {(i + 3) % 5, (i + 4) % 5, i}};
+                }
+            }
+        } else if (L == 6) {
+            for (int i = 0; i < 3; ++i) {
+                double q = std::min(QuadQuality(at(i), at(i + 1), at(i + 2), at(i + 3), n),
+                                    QuadQuality(at(i + 3), at(i + 4), at(i + 5), at(i), n));
+                if (q > bestQ) {
+                    bestQ = q;
+                    bestPolys = {{i, i + 1, i + 2, (i + 3) % 6}, {(i + 3) % 6, (i + 4) % 6, (i + 5) % 6, i}};
+                }
+            }
+        }
+        if (bestPolys.empty()) return false;
+        int level = 0;
+        for (int e : loop) level = std::max(level, front.Level(e));
+        int first = m.ReplaceRegion(loop, faces, inner, bestPolys, level + 1);
+        ++stats.templates;
+        std::vector<int> created;
+        for (size_t k = 0; k < bestPolys.size(); ++k) created.push_back(first + int(k));
+        AfterNewFaces(created, {});
+        return true;
+    }
+
+    // Triangles enclosed by a front loop (they must reach no other front edge) and inner nodes.
+    bool RegionInside(const std::vector<int> &loop, std::vector<int> &faces, std::vector<int> &inner) const
+    {
+        faces.assign(1, m.heFace[loop[0]]);
+        inner.clear();
+        std::vector<int> stack{faces[0]};
+        while (!stack.empty()) {
+            int f = stack.back();
+            stack.pop_back();
+            if (!m.IsTri(f)) return false;
+            int g = m.faceHe[f];
+            for (int k = 0; k < 3; ++k, g = m.heNext[g]) {
+                if (std::find(loop.begin(), loop.end(), g) != loop.end()) continue;
+                int t = m.heTwin[g];
+                if (t < 0 || !m.IsTri(m.heFace[t])) return false;
+                int nf = m.heFace[t];
+                if (std::find(faces.begin(), faces.end(), nf) == faces.end()) {
+                    if (faces.size() > 512) return false;
+                    faces.push_back(nf);
+                    stack.push_back(nf);
+                }
+            }
+        }
+        for (int f : faces) {
+            int g = m.faceHe[f];
+            for (int k = 0; k < 3; ++k, g = m.heNext[g]) {
+                int x = m.Org(g);
+                bool onLoop = false;
+                for (int e : loop) onLoop = onLoop || m.Org(e) == x;
+                if (!onLoop && std::find(inner.begin(), inner.end(), x) == inner.end()) {
+                    if (m.vertFixed[x]) return false;
+                    inner.push_back(x);
+                }
+            }
+        }
+        return int(faces.size()) == 2 * int(inner.size()) + int(loop.size()) - 2;
+    }
+
+    // ---- post-processing ------------------------------------------------------------------------
+    void PairLeftoverTriangles()
+    {
+        struct Pair { double q; int h; };
+        std::vector<Pair> pairs;
+        for (int h = 0; h < m.HalfEdgeCount(); ++h) {
+            int t = m.heTwin[h];
+            if (t < h || !m.HeAlive(h) || !m.IsTri(m.heFace[h]) || !m.IsTri(m.heFace[t])) continue;
+            double q = PairQuality(h);
+            if (q > p.pairMinJacobian) pairs.push_back({q, h});
+        }
+        std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) { return x.q > y.q; });
+        for (const Pair &pr : pairs) {
+            int h = pr.h, t = m.heTwin[h];
+            if (!m.HeAlive(h) || t < 0 || !m.IsTri(m.heFace[h]) || !m.IsTri(m.heFace[t])) continue;
+            m.MergeTriangles(h, 0);
+            ++stats.pairedTriangles;
+        }
+    }
+    double PairQuality(int h) const
+    {
+        int t = m.heTwin[h];
+        int a = m.Org(h), b = m.Dst(h), c = m.Org(m.hePrev[h]), d = m.Org(m.hePrev[t]);
+        P3 n = m.FaceNormal(m.heFace[h]) + m.FaceNormal(m.heFace[t]);
+        return QuadQuality(b, c, a, d, n);
+    }
+
+    void DissolveDoublets()
+    {
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (int v = 0; v < m.VertexCount(); ++v)
+                if (m.vertAlive[v] && !m.vertFixed[v] && m.Valence(v) == 2 && m.DissolveDoublet(v)) {
+                    ++stats.doublets;
+                    changed = true;
+                }
+        }
+    }
+
+    // ---- smoothing ------------------------------------------------------------------------------
+    void SmoothAll()
+    {
+        for (int v = 0; v < m.VertexCount(); ++v)
+            if (m.vertAlive[v] && !m.vertFixed[v]) SmoothNode(v);
+    }
+
+    // Laplacian target, moved only in the tangent plane, projected back onto the input surface;
+    // kept only when no incident face inverts or degrades below its worst current quality.
+    void SmoothNode(int v)
+    {
+        P3 sum(0, 0, 0);
+        int n = 0;
+        m.ForEachOutgoing(v, [&](int g) {
+            sum += m.pos[m.Dst(g)];
+            ++n;
+        });
+        if (n < 2) return;
+        P3 target = sum / double(n);
+        P3 nv = m.VertexNormal(v);
+        P3 move = target - m.pos[v];
+        move -= nv * (move * nv);
+        TryMove(v, proj.Project(m.pos[v] + move, home[v]));
+    }
+
+    double FaceQualityAt(int f, const P3 &n) const
+    {
+        if (m.IsQuad(f)) {
+            int g = m.faceHe[f];
+            int a = m.Org(g), b = m.Org(m.heNext[g]), c = m.Org(m.heNext[m.heNext[g]]), d = m.Org(m.hePrev[g]);
+            return QuadQuality(a, b, c, d, n);
+        }
+        int g = m.faceHe[f];
+        P3 A = m.pos[m.Org(g)], B = m.pos[m.Dst(g)], C = m.pos[m.Org(m.hePrev[g])];
+        double l2 = (B - A).SquaredNorm() + (C - B).SquaredNorm() + (A - C).SquaredNorm();
+        double signedArea2 = ((B - A) ^ (C - A)) * n;  // n unit
+        return l2 > 0 ? 2 * std::sqrt(3.0) * signedArea2 / l2 : -1;  // 1 for equilateral
+    }
+
+    bool TryMove(int v, const P3 &to)
+    {
+        std::vector<int> faces;
+        std::vector<P3> normals;
+        m.ForEachOutgoing(v, [&](int g) {
+            faces.push_back(m.heFace[g]);
+            P3 fn = m.FaceNormal(m.heFace[g]);
+            double l = fn.Norm();
+            normals.push_back(l > 0 ? fn / l : P3(0, 0, 0));
+        });
+        double before = 1e9;
+        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, FaceQualityAt(faces[i], normals[i]));
+        P3 old = m.pos[v];
+        m.pos[v] = to;
+        double after = 1e9;
+        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, FaceQualityAt(faces[i], normals[i]));
+        if (after > 0 && after >= std::min(before, 0.2)) return true;
+        m.pos[v] = old;
+        return false;
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif

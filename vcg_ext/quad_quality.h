@@ -1,0 +1,150 @@
+// Quality of a quad-dominant mesh, on a plain polygon list (positions + faces of 3 or 4 nodes):
+// quad fraction by count and area, scaled Jacobians, inverted quads, irregular vertices. Also the
+// conversion from MeshLab's polygonal form (triangle pairs sharing a faux edge) to that list.
+#ifndef VCG_EXT_QUAD_QUALITY_H
+#define VCG_EXT_QUAD_QUALITY_H
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+
+namespace vcg_ext {
+
+struct PolygonMesh {
+    std::vector<vcg::Point3<double>> points;
+    std::vector<std::vector<int>> faces;  // counter-clockwise, 3 or 4 nodes
+};
+
+struct QuadQualityReport {
+    int quads = 0, triangles = 0, others = 0;
+    double quadAreaFraction = 0, quadCountFraction = 0;
+    double minJacobian = 1, meanJacobian = 0;
+    int quadsBelow03 = 0;       // scaled Jacobian < 0.3
+    int invertedQuads = 0;      // scaled Jacobian <= 0
+    int interiorAllQuadVertices = 0, irregularVertices = 0;  // see IrregularFraction
+    double IrregularFraction() const { return interiorAllQuadVertices ? double(irregularVertices) / interiorAllQuadVertices : 0; }
+};
+
+class QuadQuality
+{
+public:
+    typedef vcg::Point3<double> P3;
+
+    // Scaled Jacobian: min over corners of ((e1 x e2) . n) / (|e1||e2|), n the unit normal of the
+    // quad (Newell); 1 for a square, <= 0 when a corner is reflex or the quad is folded.
+    static double ScaledJacobian(const P3 &a, const P3 &b, const P3 &c, const P3 &d)
+    {
+        const P3 v[4] = {a, b, c, d};
+        P3 n(0, 0, 0);
+        for (int k = 0; k < 4; ++k) n += v[k] ^ v[(k + 1) % 4];
+        double l = n.Norm();
+        if (!(l > 0)) return -1;
+        n /= l;
+        double worst = 1;
+        for (int k = 0; k < 4; ++k) {
+            P3 e1 = v[(k + 1) % 4] - v[k], e2 = v[(k + 3) % 4] - v[k];
+            double den = e1.Norm() * e2.Norm();
+            worst = std::min(worst, den > 0 ? ((e1 ^ e2) * n) / den : -1.0);
+        }
+        return worst;
+    }
+
+    static double Area(const PolygonMesh &pm, const std::vector<int> &f)
+    {
+        P3 n(0, 0, 0);
+        for (size_t k = 0; k < f.size(); ++k) n += pm.points[f[k]] ^ pm.points[f[(k + 1) % f.size()]];
+        return 0.5 * n.Norm();
+    }
+
+    // Irregular vertex: not on the mesh boundary, all its faces quads, valence != 4.
+    static QuadQualityReport Measure(const PolygonMesh &pm)
+    {
+        QuadQualityReport r;
+        double quadArea = 0, total = 0, jsum = 0;
+        std::vector<int> valence(pm.points.size(), 0), faceCount(pm.points.size(), 0);
+        std::vector<char> touchesTriangle(pm.points.size(), 0), onBoundary(pm.points.size(), 0);
+        std::map<std::pair<int, int>, int> edgeUse;
+        for (const auto &f : pm.faces) {
+            double a = Area(pm, f);
+            total += a;
+            if (f.size() == 4) {
+                ++r.quads;
+                quadArea += a;
+                double j = ScaledJacobian(pm.points[f[0]], pm.points[f[1]], pm.points[f[2]], pm.points[f[3]]);
+                r.minJacobian = std::min(r.minJacobian, j);
+                jsum += j;
+                r.quadsBelow03 += j < 0.3;
+                r.invertedQuads += j <= 0;
+            } else if (f.size() == 3) ++r.triangles;
+            else ++r.others;
+            for (size_t k = 0; k < f.size(); ++k) {
+                int u = f[k], w = f[(k + 1) % f.size()];
+                edgeUse[{std::min(u, w), std::max(u, w)}]++;
+                faceCount[u]++;
+                if (f.size() != 4) touchesTriangle[u] = 1;
+            }
+        }
+        for (auto &e : edgeUse) {
+            valence[e.first.first]++;
+            valence[e.first.second]++;
+            if (e.second == 1) onBoundary[e.first.first] = onBoundary[e.first.second] = 1;
+        }
+        for (size_t v = 0; v < pm.points.size(); ++v) {
+            if (faceCount[v] == 0 || onBoundary[v] || touchesTriangle[v]) continue;
+            ++r.interiorAllQuadVertices;
+            r.irregularVertices += valence[v] != 4;
+        }
+        int n = int(pm.faces.size());
+        r.quadCountFraction = n ? double(r.quads) / n : 0;
+        r.quadAreaFraction = total > 0 ? quadArea / total : 0;
+        r.meanJacobian = r.quads ? jsum / r.quads : 0;
+        if (!r.quads) r.minJacobian = 0;
+        return r;
+    }
+
+    // Polygons of a vcg triangle mesh in MeshLab's polygonal form: two triangles sharing a faux
+    // edge are one quad (needs face-face adjacency). Other faux configurations stay triangles.
+    template <class MeshType>
+    static PolygonMesh FromFauxMesh(MeshType &m)
+    {
+        PolygonMesh pm;
+        std::vector<int> vid(m.vert.size(), -1);
+        for (size_t i = 0; i < m.vert.size(); ++i)
+            if (!m.vert[i].IsD()) {
+                vid[i] = int(pm.points.size());
+                pm.points.push_back(P3::Construct(m.vert[i].cP()));
+            }
+        std::vector<char> done(m.face.size(), 0);
+        for (size_t i = 0; i < m.face.size(); ++i) {
+            auto &f = m.face[i];
+            if (f.IsD() || done[i]) continue;
+            done[i] = 1;
+            int faux = -1, count = 0;
+            for (int k = 0; k < 3; ++k)
+                if (f.IsF(k)) { faux = k; ++count; }
+            auto V = [&](typename MeshType::FaceType &g, int k) { return vid[vcg::tri::Index(m, g.V(k))]; };
+            if (count == 1) {
+                auto *g = f.FFp(faux);
+                int j = f.FFi(faux);
+                size_t gi = vcg::tri::Index(m, g);
+                int gFaux = 0;
+                for (int k = 0; k < 3; ++k) gFaux += g->IsF(k);
+                if (g != &f && !done[gi] && gFaux == 1 && g->IsF(j)) {
+                    done[gi] = 1;
+                    // quad: f's vertices from the far side of the faux edge, then g's opposite vertex
+                    pm.faces.push_back({V(f, (faux + 1) % 3), V(f, (faux + 2) % 3), V(f, faux), V(*g, (j + 2) % 3)});
+                    continue;
+                }
+            }
+            pm.faces.push_back({V(f, 0), V(f, 1), V(f, 2)});
+        }
+        return pm;
+    }
+};
+
+}  // namespace vcg_ext
+
+#endif

@@ -1,0 +1,98 @@
+// Projection of points onto a fixed triangle surface (the input surface of one patch) by walking
+// over its triangles from a "home" triangle each tracked point remembers. Smoothing moves nodes a
+// little at a time, so the walk is a few steps: O(1) per query, no spatial index.
+#ifndef VCG_EXT_SURFACE_PROJECTOR_H
+#define VCG_EXT_SURFACE_PROJECTOR_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <vcg/space/point3.h>
+
+namespace vcg_ext {
+
+class SurfaceProjector
+{
+public:
+    typedef vcg::Point3<double> P3;
+
+    void Build(const std::vector<P3> &points, const std::vector<std::array<int, 3>> &tris)
+    {
+        pts = points;
+        tri = tris;
+        nb.assign(tri.size(), {-1, -1, -1});
+        struct Key { int a, b, t, k; };
+        std::vector<Key> keys;
+        for (int t = 0; t < int(tri.size()); ++t)
+            for (int k = 0; k < 3; ++k) {
+                int a = tri[t][k], b = tri[t][(k + 1) % 3];
+                keys.push_back({std::min(a, b), std::max(a, b), t, k});
+            }
+        std::sort(keys.begin(), keys.end(), [](const Key &x, const Key &y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+        for (size_t i = 0; i + 1 < keys.size(); ++i)
+            if (keys[i].a == keys[i + 1].a && keys[i].b == keys[i + 1].b) {
+                nb[keys[i].t][keys[i].k] = keys[i + 1].t;
+                nb[keys[i + 1].t][keys[i + 1].k] = keys[i].t;
+            }
+    }
+
+    bool Empty() const { return tri.empty(); }
+
+    // Closest point to p found by walking from `home` (updated to the triangle of the result).
+    P3 Project(const P3 &p, int &home) const
+    {
+        if (tri.empty()) return p;
+        if (home < 0 || home >= int(tri.size())) home = 0;
+        int t = home, prev = -1;
+        P3 best = p;
+        double bestD = -1;
+        for (int step = 0; step < 64; ++step) {
+            int exitEdge = -1;
+            P3 q = ClosestOnTriangle(p, t, exitEdge);
+            double d = (q - p).SquaredNorm();
+            if (bestD < 0 || d < bestD) { bestD = d; best = q; home = t; }
+            if (exitEdge < 0) break;            // inside: the local closest point
+            int next = nb[t][exitEdge];
+            if (next < 0 || next == prev) break;  // surface boundary, or walking back and forth
+            prev = t;
+            t = next;
+        }
+        return best;
+    }
+
+    // Closest point on triangle t; exitEdge = the edge (k: v[k]->v[k+1]) the point was clamped to
+    // when the projection falls outside it, else -1.
+    P3 ClosestOnTriangle(const P3 &p, int t, int &exitEdge) const
+    {
+        const P3 &a = pts[tri[t][0]], &b = pts[tri[t][1]], &c = pts[tri[t][2]];
+        P3 n = (b - a) ^ (c - a);
+        double nn = n.SquaredNorm();
+        exitEdge = -1;
+        if (!(nn > 0)) return a;
+        P3 q = p - n * (((p - a) * n) / nn);  // projection on the plane
+        // barycentric signs: which edge is q outside of (most violated)
+        const P3 *v[3] = {&a, &b, &c};
+        double worst = 0;
+        for (int k = 0; k < 3; ++k) {
+            double s = ((*v[(k + 1) % 3] - *v[k]) ^ (q - *v[k])) * n;
+            if (s < worst) { worst = s; exitEdge = k; }
+        }
+        if (exitEdge < 0) return q;
+        // clamp onto the violated edge's segment
+        const P3 &e0 = *v[exitEdge], &e1 = *v[(exitEdge + 1) % 3];
+        P3 d = e1 - e0;
+        double t01 = std::max(0.0, std::min(1.0, ((q - e0) * d) / std::max(d.SquaredNorm(), 1e-300)));
+        return e0 + d * t01;
+    }
+
+private:
+    std::vector<P3> pts;
+    std::vector<std::array<int, 3>> tri;
+    std::vector<std::array<int, 3>> nb;
+};
+
+}  // namespace vcg_ext
+
+#endif
