@@ -165,75 +165,83 @@ private:
     // ---- side edges -----------------------------------------------------------------------------
     // Chooses (creating it if needed) the side edge at the open end of front edge h; returns its
     // far node or -1. `exclude` is a node the side must not reach; `keepA/keepB` an edge that must
-    // not be swapped or split.
+    // not be swapped or split. Owen's order: an existing edge close to the ideal direction, else a
+    // swap of the edge the direction crosses, else a split of it; a split that would make a side
+    // much shorter than the front edge (a sliver triangle at the node) swaps first and splits the
+    // farther edge the direction then crosses.
     int ChooseSide(int h, bool leftEnd, int exclude, int keepA, int keepB)
     {
-        Fan fan;
-        if (!(leftEnd ? front.LeftFan(h, fan) : front.RightFan(h, fan))) return -1;
-        const int node = fan.node;
-        const double theta = fan.Total();
-        const double ideal = std::min(theta / 2, M_PI / 2);
-        const double base = m.Length(h);
         auto isKept = [&](int e) {
             int a = m.Org(e), b = m.Dst(e);
             return (a == keepA && b == keepB) || (a == keepB && b == keepA);
         };
-        int best = -1;
-        for (int i = 1; i + 1 < int(fan.edges.size()); ++i) {
-            if (fan.edges[i].vertex == exclude) continue;
-            if (best < 0 || std::fabs(fan.edges[i].angle - ideal) < std::fabs(fan.edges[best].angle - ideal)) best = i;
-        }
+        const double base = m.Length(h);
         int tip = -1;
-        if (best >= 0 && std::fabs(fan.edges[best].angle - ideal) < p.sideTolerance) tip = fan.edges[best].vertex;
-        if (tip < 0) {
+        for (int attempt = 0; attempt < 4 && tip < 0; ++attempt) {
+            Fan fan;
+            if (!(leftEnd ? front.LeftFan(h, fan) : front.RightFan(h, fan))) return -1;
+            const int node = fan.node;
+            const double ideal = std::min(fan.Total() / 2, M_PI / 2);
+            int best = -1;
+            for (int i = 1; i + 1 < int(fan.edges.size()); ++i) {
+                if (fan.edges[i].vertex == exclude) continue;
+                if (best < 0 || std::fabs(fan.edges[i].angle - ideal) < std::fabs(fan.edges[best].angle - ideal)) best = i;
+            }
+            if (best >= 0 && std::fabs(fan.edges[best].angle - ideal) < p.sideTolerance) {
+                tip = fan.edges[best].vertex;
+                break;
+            }
             int k = 0;
             while (k + 1 < int(fan.gaps.size()) && fan.gaps[k].angleEnd < ideal) ++k;
-            const FanGap &gap = fan.gaps[k];
-            int e = gap.opposite;
-            int x = fan.edges[k].vertex, y = fan.edges[k + 1].vertex;
-            // 1. swap the crossed edge
-            if (!isKept(e) && m.CanFlip(e)) {
-                m.Flip(e);
-                ++stats.swaps;
-                int z = m.Org(e) == node ? m.Dst(e) : m.Org(e);  // the flipped edge joins node and z
-                int hz = m.FindHalfEdge(node, z);
-                double az = hz >= 0 ? gap.angleStart + AngleBetween(m.pos[x] - m.pos[node], m.pos[z] - m.pos[node]) : 1e9;
-                if (z != exclude && std::fabs(az - ideal) < p.sideTolerance) tip = z;
-                else { m.Flip(e); ++stats.swaps; }  // undo
+            const FanGap gap = fan.gaps[k];
+            const int e = gap.opposite;
+            const int x = fan.edges[k].vertex, y = fan.edges[k + 1].vertex;
+            P3 point;
+            bool canSplit = !isKept(e) && Splittable(e) && SplitPoint(node, x, y, ideal - gap.angleStart, point);
+            if (canSplit && (point - m.pos[node]).Norm() >= 0.5 * base) {
+                tip = NewVertexOnEdge(e, point);
+                break;
             }
-            // 2. split the crossed edge where the ideal direction meets it
-            if (tip < 0 && !isKept(e) && Splittable(e)) {
-                P3 o = m.pos[node], u = m.pos[x] - o, w = m.pos[y] - o;
-                double ul = u.Norm();
-                P3 uh = u / ul;
-                P3 wp = w - uh * (w * uh);
-                double wl = wp.Norm();
-                if (ul > 0 && wl > 0) {
-                    P3 vh = wp / wl;
-                    double delta = std::max(0.0, ideal - gap.angleStart);
-                    double dx = std::cos(delta), dy = std::sin(delta);  // direction in (uh, vh)
-                    double X0 = ul, X1 = 0, Ex = w * uh - ul, Ey = w * vh;
-                    double den = Ex * dy - Ey * dx;  // cross(E, d)
-                    if (std::fabs(den) > 1e-300) {
-                        double t = (dx * X1 - dy * X0) / den;  // cross(d, X) / cross(E, d)
-                        t = std::max(0.15, std::min(0.85, t));
-                        P3 point = m.pos[x] + (m.pos[y] - m.pos[x]) * t;
-                        // SplitEdge keeps e's origin; point is on x->y, e may be y->x
-                        tip = NewVertexOnEdge(e, point);
-                    }
-                }
+            if (isKept(e) || !m.CanFlip(e)) {
+                if (canSplit && (point - m.pos[node]).Norm() >= 0.2 * base) tip = NewVertexOnEdge(e, point);
+                else if (best >= 0 && std::fabs(fan.edges[best].angle - ideal) < 2 * p.sideTolerance) tip = fan.edges[best].vertex;
+                break;
             }
-            if (tip < 0 && best >= 0 && std::fabs(fan.edges[best].angle - ideal) < 2 * p.sideTolerance)
-                tip = fan.edges[best].vertex;  // no swap or split possible: the nearest existing edge
+            m.Flip(e);  // the new edge may be the side; else the direction now crosses a farther edge
+            ++stats.swaps;
         }
         if (tip < 0 || tip == exclude) return -1;
         // long side: split it to the base length
+        const int node = leftEnd ? m.Org(h) : m.Dst(h);
         int hs = m.FindHalfEdge(node, tip);
         if (hs >= 0 && m.Length(hs) > p.longSideFactor * base && !isKept(hs) && Splittable(hs)) {
             P3 point = m.pos[node] + (m.pos[tip] - m.pos[node]) * (base / m.Length(hs));
             tip = NewVertexOnEdge(hs, point);
         }
         return tip;
+    }
+
+    // Where the direction at `delta` from node->x, turning towards node->y inside the triangle
+    // (node x y), crosses the side x-y; false when it does not (well inside the side).
+    bool SplitPoint(int node, int x, int y, double delta, P3 &point) const
+    {
+        P3 o = m.pos[node], u = m.pos[x] - o, w = m.pos[y] - o;
+        double ul = u.Norm();
+        if (!(ul > 0)) return false;
+        P3 uh = u / ul;
+        P3 wp = w - uh * (w * uh);
+        double wl = wp.Norm();
+        if (!(wl > 0)) return false;
+        P3 vh = wp / wl;
+        delta = std::max(0.0, delta);
+        double dx = std::cos(delta), dy = std::sin(delta);
+        double ex = w * uh - ul, ey = w * vh;  // x->y in the (uh, vh) frame, x at (ul, 0)
+        double den = ex * dy - ey * dx;        // cross(x->y, direction)
+        if (std::fabs(den) < 1e-300) return false;
+        double t = -dy * ul / den;             // cross(direction, x) / cross(x->y, direction)
+        if (!(t > 0.15 && t < 0.85)) t = std::max(0.15, std::min(0.85, t));
+        point = m.pos[x] + (m.pos[y] - m.pos[x]) * t;
+        return true;
     }
 
     // ---- top edge recovery ----------------------------------------------------------------------
@@ -464,11 +472,23 @@ private:
         for (bool changed = true; changed;) {
             changed = false;
             for (int v = 0; v < m.VertexCount(); ++v)
-                if (m.vertAlive[v] && !m.vertFixed[v] && m.Valence(v) == 2 && m.DissolveDoublet(v)) {
+                if (m.vertAlive[v] && !m.vertFixed[v] && m.Valence(v) == 2 && DoubletMergeIsValid(v) && m.DissolveDoublet(v)) {
                     ++stats.doublets;
                     changed = true;
                 }
         }
+    }
+
+    // The quad left after removing a doublet node must not be inverted.
+    bool DoubletMergeIsValid(int v) const
+    {
+        std::vector<int> out;
+        m.ForEachOutgoing(v, [&](int g) { out.push_back(g); });
+        if (out.size() != 2 || !m.IsQuad(m.heFace[out[0]]) || !m.IsQuad(m.heFace[out[1]])) return false;
+        int h1 = out[0], h2 = out[1];
+        int a = m.Dst(h1), b = m.Dst(m.heNext[h1]), c = m.Dst(h2), d = m.Dst(m.heNext[h2]);
+        P3 n = m.FaceNormal(m.heFace[h1]) + m.FaceNormal(m.heFace[h2]);
+        return QuadQuality(a, b, c, d, n) > p.minQuadJacobian;
     }
 
     // ---- smoothing ------------------------------------------------------------------------------
