@@ -112,6 +112,7 @@ private:
     std::vector<char> cut;                    // per face-edge 3*f+k: on the front
     std::vector<int> twinCorner;              // per face-edge: matching face-edge of the neighbour, or -1
     std::vector<int> patchOf, sectorOf;       // per live face / per corner (root)
+    std::unordered_set<uint64_t> selectedPairs;  // selected input edges (vertex pairs): selected again at the end
 
     QMorph(MeshType &mesh, const Params &p, vcg::CallBackPos *callback) : m(mesh), par(p), cb(callback) {}
 
@@ -159,6 +160,7 @@ private:
             while (j < edges.size() && edges[j].key == edges[i].key) ++j;
             bool selected = false;
             for (size_t k = i; k < j; ++k) selected = selected || m.face[faceIdx[edges[k].he / 3]].IsFaceEdgeS(edges[k].he % 3);
+            if (selected) selectedPairs.insert(edges[i].key);
             if (j - i == 2) {
                 twinCorner[edges[i].he] = edges[i + 1].he;
                 twinCorner[edges[i + 1].he] = edges[i].he;
@@ -300,11 +302,9 @@ private:
                    const std::vector<std::array<int, 5>> &outFaces, const std::vector<float> &outQuality,
                    const std::vector<char> &used, bool hasQuality)
     {
-        // front edges as vertex pairs (flips do not carry per-edge flags, pairs survive anything)
-        std::unordered_set<uint64_t> frontPairs;
-        for (size_t f = 0; f < tri.size(); ++f)
-            for (int k = 0; k < 3; ++k)
-                if (cut[3 * f + k]) frontPairs.insert(Key(tri[f][k], tri[f][(k + 1) % 3]));
+        // The selection is kept as vertex pairs: flips do not carry per-edge flags, and the
+        // initial front edges survive unchanged, so the pairs are still edges.
+        const std::unordered_set<uint64_t> &frontPairs = selectedPairs;
 
         for (size_t v = 0; v < m.vert.size(); ++v) {
             if (m.vert[v].IsD()) continue;
