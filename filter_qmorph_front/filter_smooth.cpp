@@ -21,9 +21,10 @@ QString QMorphFrontPlugin::smoothInfo()
            "inside a mesh edge. Each pass moves an edge point to where the straight line between its neighbours "
            "crosses the edge (its two faces unfolded), replaces a vertex point by the crossings with the edges "
            "around the vertex when one side of the curve has an angle sum below 180 degrees, and removes points "
-           "whose neighbours share a face. Points closer to a vertex than the snap distance snap to it. A move is "
-           "made only if it shortens the curve and no curve crosses another or itself, passes over a corner or "
-           "changes the order of points along an edge, so the arrangement of the regions is kept."
+           "whose neighbours share a face. A move is made only if it shortens the curve and no curve crosses another "
+           "or itself, passes over a corner or changes the order of points along an edge, so the arrangement of the "
+           "regions is kept. After the passes, points closer to a vertex than the snap distance snap to it (or, "
+           "when the vertex is taken, stay at the snap distance)."
            "<br><b>Output</b>: one layer vertex per distinct point (a corner shared by curves is one vertex), one "
            "edge per pair of consecutive points (they always share a face of the mesh); loops are closed. Save it "
            "with <i>meshlabserver -o front.obj -l 1</i> (OBJ line elements). OBJ keeps 6 decimals: a reader should "
@@ -84,8 +85,11 @@ bool QMorphFrontPlugin::applySmooth(MeshDocument &md, const RichParameterList &p
 
     const QString label = mm.label() + "_front";
     bool replaced = false;
-    MeshModel *old = md.getMesh(label);
-    if (old != nullptr && old != &mm && old->cm.fn == 0) replaced = md.delMesh(old);
+    for (MeshModel *old : md.meshList)  // an earlier front of this mesh (getMesh() matches file names, not labels)
+        if (old != &mm && old->label() == label && old->cm.fn == 0) {
+            replaced = md.delMesh(old);
+            break;
+        }
     MeshModel *front = md.addNewMesh("", label, false);
     Smoothing::Polylines lines = Smoothing::ToPolylines(r.topology, r.curves);
     Smoothing::BuildEdgeMesh(lines, front->cm);
@@ -102,6 +106,9 @@ bool QMorphFrontPlugin::applySmooth(MeshDocument &md, const RichParameterList &p
         int(r.curves.size()), r.closedLoops, int(r.corners.size()), r.boundaryEdges, r.regions, r.lengthBefore,
         r.lengthAfter, change, r.jaggednessBefore, r.jaggednessAfter, r.pointsBefore, r.pointsAfter, r.passes,
         r.converged ? " (converged)" : "", r.moves, r.rejectedMoves, r.seconds);
+    if (p.iterations > 0)
+        Log("Smooth Region Boundaries: snapping: %d points moved onto a vertex, %d kept at the snap distance%s", r.snapped,
+            r.held, r.unsnapped ? qUtf8Printable(QString(", %1 left nearer (no valid place)").arg(r.unsnapped)) : "");
     Log("Smooth Region Boundaries: %s layer '%s': %d vertices, %d edges", replaced ? "replaced the" : "new",
         qUtf8Printable(front->label()), front->cm.vn, front->cm.en);
     return true;

@@ -11,9 +11,8 @@
 //   - p_i at vertex v: the fan of v is unfolded by polar angle; the path splits the angle sum
 //     into two sides. When one side is below pi the path is shortened on that side: p_i is
 //     replaced by the crossings of segment PN with the spokes (edges at v) of that side.
-// New edge points closer to an end of their edge than the snap fraction of its length snap to
-// that vertex (no slivers when the mesh is later split along the path). A move is kept only when
-// it shortens the path (so passes converge to a locally shortest path) and keeps every invariant:
+// A move is kept only when it shortens the path (so passes converge to a locally shortest path)
+// and keeps every invariant:
 //   - a mesh vertex holds at most one path point, except the fixed points (corners) where paths
 //     end; two points on one edge stay at least the snap fraction of its length apart;
 //   - points never change order along an edge (a move sweeps no other point);
@@ -23,6 +22,11 @@
 // holds no mesh vertex except on the new path, so with these checks no path can jump over a
 // corner or another path: the arrangement of the paths on the surface (which region lies
 // between which curves) is kept.
+// Snapping: while straightening, new points closer than 0.1% of their edge to an end go to that
+// vertex. At the end, edge points closer than the user's snap fraction move onto the vertex (or,
+// when that would break an invariant, to the snap distance on their edge), so splitting the mesh
+// along the paths later makes no slivers. Snapping at every move instead pins curves at vertices
+// and at the snap distance: local minima of the length far from the shortest path.
 //
 // Also here: RegionBoundarySmoothing, the whole of filter 2 (boundary graph + straightening).
 #ifndef VCG_EXT_GEODESIC_STRAIGHTENING_H
@@ -384,7 +388,7 @@ private:
         // at the snap distance (local minima of the length far from the shortest path).
         void SnapToVertices(Result &res)
         {
-            std::vector<SurfacePoint> q(1);
+            std::vector<SurfacePoint> q;
             snap = finalSnap;
             for (size_t i = 0; i < heads.size(); ++i) {
                 int s = heads[i];
@@ -392,18 +396,29 @@ private:
                 for (int n = nodes[s].next; n >= 0 && n != s;) {
                     const int after = nodes[n].next;
                     const SurfacePoint X = nodes[n].p;
-                    if (!X.IsVertex() && !nodes[n].fixed && (X.t < snap || X.t > 1 - snap)) {
-                        q[0] = SnapOnEdge(X.edge, X.t);
-                        if (Acceptable(n, q)) { Apply(n, q); ++res.snapped; }
-                        else {
-                            q[0] = SnapOnEdge(X.edge, X.t, true);
-                            if (Acceptable(n, q)) { Apply(n, q); ++res.held; }
+                    if (!X.IsVertex() && !nodes[n].fixed && after >= 0 && (X.t < snap || X.t > 1 - snap)) {
+                        // Onto the vertex; or, when a neighbour is already there, into that neighbour.
+                        const SurfacePoint v = SnapOnEdge(X.edge, X.t);
+                        q.assign(1, v);
+                        if (nodes[nodes[n].prev].p == v || nodes[after].p == v) q.clear();
+                        if (Acceptable(n, q)) {
+                            Apply(n, q);
+                            ++res.snapped;
+                        } else {
+                            // Held at the snap distance, closer to other points than the usual gap if need be.
+                            q.assign(1, SnapOnEdge(X.edge, X.t, true));
+                            const double usualGap = gap;
+                            gap = kMinSnapFraction;
+                            const bool ok = Acceptable(n, q);
+                            gap = usualGap;
+                            if (ok) { Apply(n, q); ++res.held; }
                             else ++res.unsnapped;
                         }
                     }
                     n = after;
                 }
             }
+            q.clear();
             for (size_t i = 0; i < heads.size(); ++i) {  // redundant points
                 int s = heads[i];
                 if (s < 0) continue;
@@ -411,9 +426,7 @@ private:
                     const int after = nodes[n].next;
                     if (!nodes[n].fixed && after >= 0) {
                         const SurfacePoint &X = nodes[n].p, &P = nodes[nodes[n].prev].p, &N = nodes[after].p;
-                        q.clear();
                         if (P != N && ShareFace(t, P, X, N) && Acceptable(n, q)) { Apply(n, q); ++res.removals; }
-                        q.resize(1);
                     }
                     n = after;
                 }
@@ -432,7 +445,7 @@ private:
         const Topology &t;
         double snap;             // while straightening: new points closer than this fraction of their edge to an end snap to it
         const double finalSnap;  // at the end: the user's snap distance (fraction of the edge length)
-        const double gap;        // least distance of two points on one edge, as a fraction of its length
+        double gap;              // least distance of two points on one edge, as a fraction of its length
         std::vector<Node> nodes;
         std::vector<int> siteHead;  // first node per site: vertices, then edges
         std::vector<int> heads;     // per path: its first node (open) or a fixed node (closed)
@@ -767,6 +780,7 @@ public:
         double lengthBefore = 0, lengthAfter = 0;
         double jaggednessBefore = 0, jaggednessAfter = 0;  // total |geodesic turning| / total length (rad per unit length)
         int passes = 0, moves = 0, rejectedMoves = 0;
+        int snapped = 0, held = 0, unsnapped = 0;  // final snapping (see GeodesicStraightening::Result)
         bool converged = false;
         double topologySeconds = 0, graphSeconds = 0, straightenSeconds = 0, seconds = 0;
     };
@@ -828,6 +842,9 @@ public:
         r.passes = sr.passes;
         r.moves = sr.moves;
         r.rejectedMoves = sr.rejected;
+        r.snapped = sr.snapped;
+        r.held = sr.held;
+        r.unsnapped = sr.unsnapped;
         r.converged = sr.converged;
         Measure(r.topology, paths, r.pointsAfter, r.lengthAfter, r.jaggednessAfter);
         for (size_t i = 0; i < paths.size(); ++i) {

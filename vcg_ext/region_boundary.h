@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -391,11 +392,16 @@ public:
 
     static int CountRegions(const Topology &t, const std::vector<int> &faceRegion)
     {
-        std::vector<int> ids;
+        std::unordered_set<int> ids;
+        int last = 0;
+        bool first = true;
         for (int f = 0; f < t.faceCount; ++f)
-            if (t.faceVerts[f][0] >= 0) ids.push_back(faceRegion[f]);
-        std::sort(ids.begin(), ids.end());
-        return int(std::unique(ids.begin(), ids.end()) - ids.begin());
+            if (t.faceVerts[f][0] >= 0 && (first || faceRegion[f] != last)) {  // runs of one id are common
+                last = faceRegion[f];
+                first = false;
+                ids.insert(last);
+            }
+        return int(ids.size());
     }
 
 private:

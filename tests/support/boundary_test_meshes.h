@@ -16,6 +16,7 @@
 #include <vcg_ext/geodesic_straightening.h>
 
 namespace qmf_test {
+namespace boundary {  // (nested: other test headers share qmf_test)
 
 typedef vcg::Point3d D3;
 typedef vcg_ext::MeshEdgeTopology<TMesh> Topo;
@@ -265,6 +266,7 @@ inline int Majority(const std::map<int, int> &count)
     return best;
 }
 
+}  // namespace boundary
 }  // namespace qmf_test
 
 #endif

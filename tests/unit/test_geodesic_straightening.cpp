@@ -11,6 +11,7 @@
 #include <vcg_ext/vsa_segmentation.h>
 
 using namespace qmf_test;
+using namespace qmf_test::boundary;
 typedef vcg_ext::SurfacePoint SP;
 
 namespace {
@@ -47,6 +48,7 @@ void ExpectInvariants(const TMesh &m, const Smoothing::Result &r, double snapFra
     EXPECT_EQ(c.crossings, 0) << c.firstProblem;
     EXPECT_EQ(c.pointsNearVertex, 0);
     EXPECT_EQ(c.sharedPoints, 0);
+    EXPECT_EQ(r.unsnapped, 0);
 }
 
 // The ends of every open curve are corners, the same before and after.

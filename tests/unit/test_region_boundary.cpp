@@ -9,6 +9,7 @@
 #include <vcg_ext/region_boundary.h>
 
 using namespace qmf_test;
+using namespace qmf_test::boundary;
 typedef vcg_ext::RegionBoundaryGraph<TMesh> Graph;
 
 namespace {
