@@ -1,7 +1,9 @@
 // Locating polyline points on a triangle mesh: at a vertex, inside an edge or inside a face.
 //
-// A uniform grid over the live faces (cells ~ faces, built in O(F) by counting, no sort) finds
-// every face within the tolerance of a point. Classification of a point p, with tolerance tol:
+// Points are located together: a uniform grid over the points (not over the faces), then one
+// pass over the faces, each testing only the points in the cells its box (grown by the tolerance)
+// meets: O(F) with a small constant and no per-face allocation. Classification of a point p, with
+// tolerance tol:
 //   1. the closest face f and its closest point q must be within tol of p, else p is off the surface;
 //   2. q within tol of a vertex of f           -> at that vertex (the nearest one);
 //   3. else q within tol of an edge of f       -> inside that edge (the nearest one), re-projected
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -76,29 +79,43 @@ public:
     SurfaceLocator(const MeshType &mesh, const EmbeddingAdjacency &adjacency, double tolerance)
         : m(mesh), adj(adjacency), tol(tolerance)
     {
-        BuildGrid();
     }
 
     EmbedVec P(int v) const { return EmbedVec::Construct(m.vert[v].cP()); }
 
-    // Locates p; false when p is farther than the tolerance from the surface. `distance`: to the
-    // closest face within the search box (-1 when none is there).
-    bool Locate(const EmbedVec &p, SurfacePoint &out, double &distance) const
+    // Locates every point: found[i] says whether points[i] is within the tolerance of the surface.
+    void LocateAll(const std::vector<EmbedVec> &points, std::vector<SurfacePoint> &out, std::vector<char> &found) const
     {
-        int best = -1;
-        EmbedVec q;
-        distance = std::numeric_limits<double>::max();
-        ForFacesNear(p, tol, [&](int f) {
-            const EmbedVec c = ClosestPointOnTriangle(p, P(adj.fv[f][0]), P(adj.fv[f][1]), P(adj.fv[f][2]));
-            const double d = (c - p).Norm();
-            if (d < distance || (d == distance && f < best)) { distance = d; best = f; q = c; }
-        });
-        if (best < 0 || distance > tol) {
-            distance = best < 0 ? -1 : distance;
-            return false;
+        const int n = int(points.size());
+        out.assign(n, SurfacePoint());
+        found.assign(n, 0);
+        if (n == 0) return;
+        std::vector<double> best(n, std::numeric_limits<double>::max());
+        std::vector<int> bestFace(n, -1);
+        std::vector<EmbedVec> closest(n);
+        PointGrid grid(points, tol, std::max<int64_t>(n, int64_t(adj.fv.size()) / 16));
+        for (int f = 0; f < int(adj.fv.size()); ++f) {
+            if (!adj.IsLive(f)) continue;
+            EmbedVec bmin, bmax;
+            FaceBox(f, bmin, bmax);
+            grid.ForPointsInBox(bmin, bmax, [&](int i) {
+                const EmbedVec c = ClosestPointOnTriangle(points[i], P(adj.fv[f][0]), P(adj.fv[f][1]), P(adj.fv[f][2]));
+                const double d = (c - points[i]).Norm();
+                if (d <= tol && d < best[i]) { best[i] = d; bestFace[i] = f; closest[i] = c; }  // ties: lower face
+            });
         }
-        Classify(best, q, out);
-        return true;
+        for (int i = 0; i < n; ++i)
+            if (bestFace[i] >= 0) { Classify(bestFace[i], closest[i], out[i]); found[i] = 1; }
+    }
+
+    // One point (tests, tools): O(F).
+    bool Locate(const EmbedVec &p, SurfacePoint &out) const
+    {
+        std::vector<SurfacePoint> o;
+        std::vector<char> found;
+        LocateAll({p}, o, found);
+        out = o[0];
+        return found[0] != 0;
     }
 
     // The same rules for a point already on face f (used for points computed on the surface).
@@ -158,12 +175,76 @@ public:
     }
 
 private:
+    // Uniform grid over points (CSR), its box grown by the tolerance.
+    class PointGrid
+    {
+    public:
+        PointGrid(const std::vector<EmbedVec> &points, double tol, int64_t cells)
+        {
+            for (const EmbedVec &p : points) box.Add(p);
+            box.Offset(tol + 1e-12 * std::max(1.0, box.Diag()));
+            vcg::BestDim<double>(std::max<int64_t>(1, cells), box.Dim(), dim);
+            for (int k = 0; k < 3; ++k) {
+                dim[k] = std::max(1, dim[k]);
+                cell[k] = (box.max[k] - box.min[k]) / dim[k];
+            }
+            start.assign(size_t(dim[0]) * dim[1] * dim[2] + 1, 0);
+            std::vector<int> at(points.size());
+            for (size_t i = 0; i < points.size(); ++i) ++start[(at[i] = Index(CellOf(points[i]))) + 1];
+            for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+            ids.resize(points.size());
+            std::vector<int> fill(start.begin(), start.end() - 1);
+            for (size_t i = 0; i < points.size(); ++i) ids[fill[at[i]]++] = int(i);
+            this->points = &points;
+            grow = tol;
+        }
+
+        // Calls fn(i) for every point i inside the box grown by the tolerance.
+        template <class Fn>
+        void ForPointsInBox(EmbedVec bmin, EmbedVec bmax, Fn fn) const
+        {
+            for (int k = 0; k < 3; ++k) {
+                bmin[k] -= grow;
+                bmax[k] += grow;
+                if (bmax[k] < box.min[k] || bmin[k] > box.max[k]) return;
+            }
+            const vcg::Point3i a = CellOf(bmin), b = CellOf(bmax);
+            for (int z = a[2]; z <= b[2]; ++z)
+                for (int y = a[1]; y <= b[1]; ++y)
+                    for (int x = a[0]; x <= b[0]; ++x) {
+                        const int c = (z * dim[1] + y) * dim[0] + x;
+                        for (int j = start[c]; j < start[c + 1]; ++j) {
+                            const EmbedVec &p = (*points)[ids[j]];
+                            if (p[0] >= bmin[0] && p[0] <= bmax[0] && p[1] >= bmin[1] && p[1] <= bmax[1] &&
+                                p[2] >= bmin[2] && p[2] <= bmax[2])
+                                fn(ids[j]);
+                        }
+                    }
+        }
+
+    private:
+        vcg::Box3<double> box;
+        vcg::Point3i dim;
+        EmbedVec cell;
+        std::vector<int> start, ids;
+        const std::vector<EmbedVec> *points = nullptr;
+        double grow = 0;
+
+        vcg::Point3i CellOf(const EmbedVec &p) const
+        {
+            vcg::Point3i c;
+            for (int k = 0; k < 3; ++k) {
+                const double x = cell[k] > 0 ? std::floor((p[k] - box.min[k]) / cell[k]) : 0.0;
+                c[k] = int(std::max(0.0, std::min(double(dim[k] - 1), std::isfinite(x) ? x : 0.0)));
+            }
+            return c;
+        }
+        int Index(const vcg::Point3i &c) const { return (c[2] * dim[1] + c[1]) * dim[0] + c[0]; }
+    };
+
     const MeshType &m;
     const EmbeddingAdjacency &adj;
     double tol;
-    EmbedVec lo, cell;
-    vcg::Point3i dim;
-    std::vector<int> cellStart, cellFaces;
 
     void SetVertex(int f, int corner, SurfacePoint &out) const
     {
@@ -173,79 +254,12 @@ private:
         out.pos = P(out.vertex);
     }
 
-    vcg::Point3i CellOf(const EmbedVec &p) const
-    {
-        vcg::Point3i c;
-        for (int k = 0; k < 3; ++k) {
-            const double x = std::floor((p[k] - lo[k]) / cell[k]);
-            c[k] = int(std::max(0.0, std::min(double(dim[k] - 1), std::isfinite(x) ? x : 0.0)));
-        }
-        return c;
-    }
-    int CellIndex(int x, int y, int z) const { return (z * dim[1] + y) * dim[0] + x; }
-
-    template <class Fn>
-    void ForCellsOfBox(const EmbedVec &bmin, const EmbedVec &bmax, Fn fn) const
-    {
-        const vcg::Point3i a = CellOf(bmin), b = CellOf(bmax);
-        for (int z = a[2]; z <= b[2]; ++z)
-            for (int y = a[1]; y <= b[1]; ++y)
-                for (int x = a[0]; x <= b[0]; ++x) fn(CellIndex(x, y, z));
-    }
-
-    template <class Fn>
-    void ForFacesNear(const EmbedVec &p, double r, Fn fn) const
-    {
-        const EmbedVec d(r, r, r);
-        ForCellsOfBox(p - d, p + d, [&](int c) {
-            for (int i = cellStart[c]; i < cellStart[c + 1]; ++i) fn(cellFaces[i]);
-        });
-    }
-
     void FaceBox(int f, EmbedVec &bmin, EmbedVec &bmax) const
     {
         bmin = bmax = P(adj.fv[f][0]);
         for (int k = 1; k < 3; ++k) {
             const EmbedVec q = P(adj.fv[f][k]);
             for (int i = 0; i < 3; ++i) { bmin[i] = std::min(bmin[i], q[i]); bmax[i] = std::max(bmax[i], q[i]); }
-        }
-    }
-
-    // Cells ~ live faces (vcg's BestDim), each face listed in every cell its box meets; queries
-    // look at every cell within the tolerance of the point.
-    void BuildGrid()
-    {
-        vcg::Box3<double> box;
-        int live = 0;
-        for (int f = 0; f < int(adj.fv.size()); ++f)
-            if (adj.IsLive(f)) {
-                ++live;
-                for (int k = 0; k < 3; ++k) box.Add(P(adj.fv[f][k]));
-            }
-        if (live == 0) box.Add(EmbedVec(0, 0, 0));
-        const double pad = std::max(tol, 1e-9 * std::max(1.0, box.Diag()));
-        box.Offset(pad);
-        vcg::BestDim<double>(std::max(1, live), box.Dim(), dim);
-        for (int k = 0; k < 3; ++k) dim[k] = std::max(1, dim[k]);
-        lo = box.min;
-        cell = EmbedVec(box.DimX() / dim[0], box.DimY() / dim[1], box.DimZ() / dim[2]);
-        cellStart.assign(size_t(dim[0]) * dim[1] * dim[2] + 1, 0);
-        for (int pass = 0; pass < 2; ++pass) {  // count, then fill
-            std::vector<int> fill;
-            if (pass == 1) {
-                for (size_t c = 1; c < cellStart.size(); ++c) cellStart[c] += cellStart[c - 1];
-                cellFaces.resize(cellStart.back());
-                fill.assign(cellStart.begin(), cellStart.end() - 1);
-            }
-            for (int f = 0; f < int(adj.fv.size()); ++f) {
-                if (!adj.IsLive(f)) continue;
-                EmbedVec bmin, bmax;
-                FaceBox(f, bmin, bmax);
-                ForCellsOfBox(bmin, bmax, [&](int c) {
-                    if (pass == 0) ++cellStart[c + 1];
-                    else cellFaces[fill[c]++] = f;
-                });
-            }
         }
     }
 };

@@ -89,6 +89,9 @@ public:
         double minAngleDeg = 0;      // smallest angle of the new triangles (0 when none)
         std::vector<int> faceRegion; // region id per face after relabelling (-1: deleted)
         double secondsPrepare = 0, secondsApply = 0, seconds = 0;
+        // Phases: checks + adjacency + grid, locating, tracing + planning the faces, writing faces and
+        // adjacency and selection, relabelling patches (+ vcg's FF/VF when the mesh has them).
+        double secondsSetup = 0, secondsLocate = 0, secondsTraceSplit = 0, secondsWrite = 0, secondsRelabel = 0;
     };
 
     // Everything Apply() needs, computed without touching the mesh.
@@ -151,6 +154,17 @@ private:
     {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
+    // Seconds since the last lap (or the start).
+    struct Lap {
+        std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+        double operator()()
+        {
+            const auto now = std::chrono::steady_clock::now();
+            const double s = std::chrono::duration<double>(now - t).count();
+            t = now;
+            return s;
+        }
+    };
     static IdPair Ordered(int a, int b) { return a < b ? IdPair(a, b) : IdPair(b, a); }
     static uint64_t EdgeKey(int u, int w)
     {
@@ -176,6 +190,7 @@ private:
             if (poly.en == 0) return Fail(poly.fn > 0 ? "the polyline layer has no edges (it is a triangle mesh, not a polyline)"
                                                       : "the polyline layer has no edges");
             if (m.fn == 0) return Fail("the mesh has no faces");
+            Lap lap;
             for (const VertexType &v : m.vert)
                 if (!v.IsD() && !(std::isfinite(double(v.cP()[0])) && std::isfinite(double(v.cP()[1])) && std::isfinite(double(v.cP()[2]))))
                     return Fail("the mesh has vertices with NaN or infinite coordinates");
@@ -195,12 +210,15 @@ private:
             loc = &locator;
             embedding::SurfaceTracer<MeshType> tracer(m, plan.adj, tol);
             tr = &tracer;
+            r.secondsSetup = lap();
             if (!LocatePolyline(poly)) return r;
+            r.secondsLocate = lap();
             Progress(cb, 25, "Split along front: tracing segments");
             if (!EmbedSegments(poly)) return r;
             Progress(cb, 40, "Split along front: splitting faces");
             if (!SplitFaces()) return r;
             ExpandAlongEdgeSegments();
+            r.secondsTraceSplit = lap();
             std::sort(front.begin(), front.end());
             front.erase(std::unique(front.begin(), front.end()), front.end());
             plan.frontEdges = front;
@@ -286,36 +304,42 @@ private:
         bool LocatePolyline(const PolylineType &poly)
         {
             polyPoint.assign(poly.vert.size(), -1);
-            std::unordered_set<int> seen;
-            const int total = int(poly.edge.size());
-            for (int e = 0; e < total; ++e) {
+            std::vector<int> used;  // polyline vertices used by live edges, in order of first use
+            std::vector<EmbedVec> points;
+            for (int e = 0; e < int(poly.edge.size()); ++e) {
                 if (poly.edge[e].IsD()) continue;
-                if ((e & 1023) == 0) Progress(cb, 8 + 17 * e / std::max(1, total), "Split along front: locating points");
                 for (int k = 0; k < 2; ++k) {
                     const auto *pv = poly.edge[e].cV(k);
                     const int i = int(vcg::tri::Index(poly, pv));
-                    if (polyPoint[i] >= 0) continue;
+                    if (polyPoint[i] != -1) continue;
                     if (pv->IsD()) return Error("polyline edge " + std::to_string(e) + " uses a deleted vertex");
                     const EmbedVec p = EmbedVec::Construct(pv->cP());
                     if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
                         return Error("polyline point " + std::to_string(i) + " has NaN or infinite coordinates");
-                    SurfacePoint s;
-                    double d;
-                    if (!loc->Locate(p, s, d)) {
-                        char buf[160];
-                        snprintf(buf, sizeof buf, " is %.3g from the surface, farther than the locate tolerance %.3g",
-                                 loc->DistanceToSurface(p), tol);
-                        return Error("polyline point " + std::to_string(i) + " " + Pos(p) + buf);
-                    }
-                    const int id = Register(s);
-                    polyPoint[i] = id;
-                    ++r.polylinePoints;
-                    if (seen.count(id)) { ++r.mergedPoints; continue; }
-                    seen.insert(id);
-                    if (s.kind == SurfacePoint::AtVertex) ++r.pointsAtVertices;
-                    else if (s.kind == SurfacePoint::OnEdge) ++r.pointsOnEdges;
-                    else ++r.pointsInFaces;
+                    polyPoint[i] = -2;
+                    used.push_back(i);
+                    points.push_back(p);
                 }
+            }
+            std::vector<SurfacePoint> located;
+            std::vector<char> found;
+            loc->LocateAll(points, located, found);
+            std::unordered_set<int> seen;
+            for (size_t j = 0; j < used.size(); ++j) {
+                if (!found[j]) {
+                    char buf[160];
+                    snprintf(buf, sizeof buf, " is %.3g from the surface, farther than the locate tolerance %.3g",
+                             loc->DistanceToSurface(points[j]), tol);
+                    return Error("polyline point " + std::to_string(used[j]) + " " + Pos(points[j]) + buf);
+                }
+                const SurfacePoint &s = located[j];
+                const int id = Register(s);
+                polyPoint[used[j]] = id;
+                ++r.polylinePoints;
+                if (!seen.insert(id).second) { ++r.mergedPoints; continue; }
+                if (s.kind == SurfacePoint::AtVertex) ++r.pointsAtVertices;
+                else if (s.kind == SurfacePoint::OnEdge) ++r.pointsOnEdges;
+                else ++r.pointsInFaces;
             }
             return true;
         }
@@ -514,6 +538,7 @@ private:
         void Run()
         {
             Progress(cb, 70, "Split along front: writing faces");
+            Lap lap;
             AddVertices();
             std::vector<int> changed, parent;
             AddFaces(changed, parent);
@@ -521,10 +546,12 @@ private:
             Progress(cb, 80, "Split along front: selecting front edges");
             SelectFrontEdges();
             for (int f : changed) UpdateFace(f);
+            MeasureNewTriangles(changed);
+            r.secondsWrite = lap();
             Progress(cb, 85, "Split along front: relabelling patches");
             Relabel();
             WriteVcgTopology();
-            MeasureNewTriangles(changed);
+            r.secondsRelabel = lap();
         }
 
     private:
@@ -579,12 +606,15 @@ private:
             }
         }
 
+        // `parent[i]`: the position in plan.splitFaces of the face changed[i] comes from.
         void AddFaces(std::vector<int> &changed, std::vector<int> &parent)
         {
             int added = 0;
             for (const auto &pc : plan.pieces) added += int(pc.size()) - 1;
             if (added > 0) vcg::tri::Allocator<MeshType>::AddFaces(m, added);
             int next = plan.faceCount;
+            changed.reserve(plan.splitFaces.size() + added);
+            parent.reserve(plan.splitFaces.size() + added);
             for (size_t i = 0; i < plan.splitFaces.size(); ++i) {
                 const int f = plan.splitFaces[i];
                 for (size_t j = 0; j < plan.pieces[i].size(); ++j) {
@@ -593,40 +623,44 @@ private:
                     if (slot != f) nf.ImportData(m.face[f]);
                     for (int k = 0; k < 3; ++k) nf.V(k) = &m.vert[plan.pieces[i][j][k]];
                     changed.push_back(slot);
-                    parent.push_back(f);
+                    parent.push_back(int(i));
                 }
             }
         }
 
-        // Local update of the half-edge adjacency: the new faces among themselves, and across the
-        // unsplit edges of their parents to the untouched neighbours.
+        // Local update of the half-edge adjacency: the new faces among themselves (matched by
+        // sorting their half-edges), and across the unsplit edges of their parents to the
+        // untouched neighbours (the parents' old twins).
         void UpdateAdjacency(const std::vector<int> &changed, const std::vector<int> &parent)
         {
             EmbeddingAdjacency &adj = plan.adj;
-            std::unordered_map<int, std::array<int, 3>> oldFv;
-            std::unordered_map<int, std::array<int, 3>> oldTwin;
-            for (int f : plan.splitFaces) {
-                oldFv[f] = adj.fv[f];
-                oldTwin[f] = {adj.twin[3 * f], adj.twin[3 * f + 1], adj.twin[3 * f + 2]};
+            const size_t nSplit = plan.splitFaces.size();
+            std::vector<std::array<int, 3>> oldFv(nSplit), oldTwin(nSplit);
+            for (size_t i = 0; i < nSplit; ++i) {
+                const int f = plan.splitFaces[i];
+                oldFv[i] = adj.fv[f];
+                oldTwin[i] = {adj.twin[3 * f], adj.twin[3 * f + 1], adj.twin[3 * f + 2]};
             }
             adj.fv.resize(m.face.size(), {-1, -1, -1});
             adj.twin.resize(3 * m.face.size(), -1);
             adj.vertexFace.resize(m.vert.size(), -1);
-            std::unordered_map<uint64_t, int> halfEdge;
-            halfEdge.reserve(3 * changed.size());
+            auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
+            std::vector<std::pair<uint64_t, int>> halfEdges;  // (from, to) -> half-edge
+            halfEdges.reserve(3 * changed.size());
             for (int f : changed) {
                 for (int k = 0; k < 3; ++k) adj.fv[f][k] = int(vcg::tri::Index(m, m.face[f].V(k)));
                 for (int k = 0; k < 3; ++k) {
-                    halfEdge[(uint64_t(uint32_t(adj.fv[f][k])) << 32) | uint32_t(adj.fv[f][EmbeddingAdjacency::Next(k)])] = 3 * f + k;
+                    halfEdges.push_back({key(adj.fv[f][k], adj.fv[f][EmbeddingAdjacency::Next(k)]), 3 * f + k});
                     adj.vertexFace[adj.fv[f][k]] = f;
                 }
             }
+            std::sort(halfEdges.begin(), halfEdges.end());
             for (size_t i = 0; i < changed.size(); ++i) {
                 const int f = changed[i];
                 for (int k = 0; k < 3; ++k) {
                     const int a = adj.fv[f][k], b = adj.fv[f][EmbeddingAdjacency::Next(k)];
-                    auto it = halfEdge.find((uint64_t(uint32_t(b)) << 32) | uint32_t(a));
-                    if (it != halfEdge.end()) { adj.twin[3 * f + k] = it->second; continue; }
+                    auto it = std::lower_bound(halfEdges.begin(), halfEdges.end(), std::make_pair(key(b, a), -1));
+                    if (it != halfEdges.end() && it->first == key(b, a)) { adj.twin[3 * f + k] = it->second; continue; }
                     const std::array<int, 3> &pv = oldFv[parent[i]];
                     adj.twin[3 * f + k] = -1;
                     for (int j = 0; j < 3; ++j)
@@ -672,55 +706,82 @@ private:
 
         // Patches: faces connected without crossing a selected edge. Each takes the id covering most
         // of its area (the new faces carry their parent's id); ids already taken by a larger patch
-        // are replaced by new ones, so different patches always have different ids.
+        // are replaced by new ones, so different patches always have different ids. Areas are only
+        // computed for the few patches that hold several ids or share one.
         void Relabel()
         {
             const int n = int(m.face.size());
             std::vector<int> oldId(n, -1);
-            bool haveIds = vcg::tri::HasPerFaceQuality(m) && RegionIds<MeshType>::Read(m, oldId).empty();
-            if (!haveIds) oldId.assign(n, -1);
-            std::vector<int> patch(n, -1), stack;
-            std::vector<double> patchArea;
-            std::vector<std::vector<std::pair<int, double>>> idArea;  // per patch: (old id, area)
-            for (int s = 0; s < n; ++s) {
-                if (m.face[s].IsD() || patch[s] >= 0) continue;
-                const int pid = int(patchArea.size());
-                patchArea.push_back(0);
-                idArea.emplace_back();
-                patch[s] = pid;
-                stack.push_back(s);
-                while (!stack.empty()) {
-                    const int f = stack.back();
-                    stack.pop_back();
-                    const double a = Area(m.face[f]);
-                    patchArea[pid] += a;
-                    auto &ia = idArea[pid];
-                    auto it = std::find_if(ia.begin(), ia.end(), [&](const std::pair<int, double> &x) { return x.first == oldId[f]; });
-                    if (it == ia.end()) ia.push_back({oldId[f], a});
-                    else it->second += a;
-                    for (int k = 0; k < 3; ++k) {
-                        const int h = plan.adj.twin[3 * f + k];
-                        if (h < 0 || m.face[f].IsFaceEdgeS(k)) continue;
-                        if (patch[h / 3] < 0) { patch[h / 3] = pid; stack.push_back(h / 3); }
-                    }
+            if (!(vcg::tri::HasPerFaceQuality(m) && RegionIds<MeshType>::Read(m, oldId).empty())) oldId.assign(n, -1);
+            // Union-find over the faces in index order (cache friendly), joined across unselected edges.
+            std::vector<int> parent(n), patch(n, -1);
+            for (int f = 0; f < n; ++f) parent[f] = f;
+            auto find = [&](int x) {
+                while (parent[x] != x) x = parent[x] = parent[parent[x]];
+                return x;
+            };
+            for (int f = 0; f < n; ++f) {
+                if (m.face[f].IsD()) continue;
+                for (int k = 0; k < 3; ++k) {
+                    const int h = plan.adj.twin[3 * f + k];
+                    if (h < 0 || h / 3 < f || m.face[f].IsFaceEdgeS(k)) continue;
+                    const int a = find(f), b = find(h / 3);
+                    if (a != b) parent[std::max(a, b)] = std::min(a, b);
                 }
             }
-            const int k = int(patchArea.size());
-            std::vector<int> order(k);
-            for (int i = 0; i < k; ++i) order[i] = i;
-            std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return patchArea[a] > patchArea[b]; });
+            std::vector<int> claim;  // per patch: its majority id
+            std::vector<char> mixed;
+            for (int f = 0; f < n; ++f) {  // a root is its set's lowest face: patches numbered in face order
+                if (m.face[f].IsD()) continue;
+                const int root = find(f);
+                if (root == f) {
+                    patch[f] = int(claim.size());
+                    claim.push_back(oldId[f]);
+                    mixed.push_back(0);
+                } else {
+                    patch[f] = patch[root];
+                    if (oldId[f] != claim[patch[f]]) mixed[patch[f]] = 1;
+                }
+            }
+            const int k = int(claim.size());
+            if (std::find(mixed.begin(), mixed.end(), 1) != mixed.end()) {
+                std::vector<std::vector<std::pair<int, double>>> idArea(k);  // (old id, area) per mixed patch
+                for (int f = 0; f < n; ++f) {
+                    if (patch[f] < 0 || !mixed[patch[f]]) continue;
+                    auto &ia = idArea[patch[f]];
+                    auto it = std::find_if(ia.begin(), ia.end(), [&](const std::pair<int, double> &x) { return x.first == oldId[f]; });
+                    if (it == ia.end()) ia.push_back({oldId[f], Area(m.face[f])});
+                    else it->second += Area(m.face[f]);
+                }
+                for (int pid = 0; pid < k; ++pid) {
+                    if (!mixed[pid]) continue;
+                    double bestArea = -1;
+                    for (const auto &x : idArea[pid])
+                        if (x.second > bestArea || (x.second == bestArea && x.first < claim[pid])) { claim[pid] = x.first; bestArea = x.second; }
+                }
+            }
+            // Patches without an id or sharing one: by decreasing area, the first keeps it, the others get new ids.
+            std::unordered_map<int, int> claims;
+            for (int pid = 0; pid < k; ++pid) ++claims[claim[pid]];
+            std::vector<char> contested(k, 0);
+            std::vector<double> area(k, 0.0);
+            bool anyContested = false;
+            for (int pid = 0; pid < k; ++pid)
+                if (claim[pid] < 0 || claims[claim[pid]] > 1) contested[pid] = 1, anyContested = true;
+            if (anyContested)
+                for (int f = 0; f < n; ++f)
+                    if (patch[f] >= 0 && contested[patch[f]]) area[patch[f]] += Area(m.face[f]);
+            std::vector<int> order;
+            for (int pid = 0; pid < k; ++pid)
+                if (contested[pid]) order.push_back(pid);
+            std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return area[a] > area[b]; });
             int nextFree = 0;
             for (int i = 0; i < n; ++i) nextFree = std::max(nextFree, oldId[i] + 1);
-            std::vector<int> newId(k, -1);
-            std::unordered_map<int, char> taken;
+            std::vector<int> newId(claim);
+            std::unordered_set<int> taken;
             for (int pid : order) {
-                int best = -1;
-                double bestArea = -1;
-                for (const auto &x : idArea[pid])
-                    if (x.first >= 0 && (x.second > bestArea || (x.second == bestArea && x.first < best))) { best = x.first; bestArea = x.second; }
-                if (best >= 0 && !taken[best]) newId[pid] = best;
+                if (claim[pid] >= 0 && !taken.count(claim[pid])) taken.insert(claim[pid]);
                 else newId[pid] = nextFree++;
-                taken[newId[pid]] = 1;
             }
             r.patches = k;
             r.faceRegion.assign(n, -1);
@@ -735,7 +796,20 @@ private:
             if (vcg::tri::HasPerFaceQuality(m))
                 for (int f = 0; f < n; ++f)
                     if (!m.face[f].IsD()) m.face[f].Q() = typename FaceType::QualityType(r.faceRegion[f]);
-            if (vcg::tri::HasPerFaceColor(m)) RegionIds<MeshType>::ColorFaces(m, r.faceRegion);
+            if (vcg::tri::HasPerFaceColor(m)) ColorPatches(patch, newId);
+        }
+
+        // The colours RegionIds::ColorFaces gives (hue scattered over the id range), once per patch.
+        void ColorPatches(const std::vector<int> &patch, const std::vector<int> &patchId)
+        {
+            if (patchId.empty()) return;
+            const int lo = *std::min_element(patchId.begin(), patchId.end());
+            const int hi = *std::max_element(patchId.begin(), patchId.end());
+            const int range = std::max(1, hi - lo + 1);
+            std::vector<vcg::Color4b> colour;
+            for (int id : patchId) colour.push_back(vcg::Color4b::Scatter(range, id - lo, .75f, .95f));
+            for (int f = 0; f < int(m.face.size()); ++f)
+                if (patch[f] >= 0) m.face[f].C() = colour[patch[f]];
         }
 
         // vcg's own FF / VF adjacency, when the mesh has them, are kept valid.
