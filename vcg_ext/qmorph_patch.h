@@ -35,6 +35,7 @@ struct PatchParams {
     double longSideFactor = std::sqrt(3.0);  // sides longer than this times the base are split
     double minQuadJacobian = 0.05;      // a quad is formed only when its scaled Jacobian exceeds this
     double pairMinJacobian = 0.3;       // leftover triangle pairs are merged above this quality
+    double migrationMinJacobian = 0.02; // quads made while bringing distant triangles together
     int finalSmoothing = 5;             // tangent-plane smoothing sweeps at the end
     bool smoothing = true;              // local smoothing after each quad + final sweeps
 };
@@ -82,7 +83,13 @@ public:
             }
             if (successes == before) break;
         }
-        PairLeftoverTriangles();
+        // Leftover triangles: smooth first (their shapes improve), then merge good adjacent pairs,
+        // then bring distant ones together through the quads.
+        if (p.smoothing)
+            for (int it = 0; it < 2; ++it) SmoothAll();
+        PairLeftoverTriangles(p.pairMinJacobian);
+        PairLeftoverTriangles(p.migrationMinJacobian);
+        MigrateTrianglesIntoPairs();
         DissolveDoublets();
         if (p.smoothing)
             for (int it = 0; it < p.finalSmoothing; ++it) SmoothAll();
@@ -99,6 +106,7 @@ private:
     PatchStats stats;
     std::vector<int> failedAt;  // per half-edge: success count when it last failed
     int successes = 0;
+
     int vertexCap;
 
     // ---- queue ----------------------------------------------------------------------------------
@@ -441,7 +449,7 @@ private:
     }
 
     // ---- post-processing ------------------------------------------------------------------------
-    void PairLeftoverTriangles()
+    void PairLeftoverTriangles(double minQuality)
     {
         struct Pair { double q; int h; };
         std::vector<Pair> pairs;
@@ -449,7 +457,7 @@ private:
             int t = m.heTwin[h];
             if (t < h || !m.HeAlive(h) || !m.IsTri(m.heFace[h]) || !m.IsTri(m.heFace[t])) continue;
             double q = PairQuality(h);
-            if (q > p.pairMinJacobian) pairs.push_back({q, h});
+            if (q > minQuality) pairs.push_back({q, h});
         }
         std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) { return x.q > y.q; });
         for (const Pair &pr : pairs) {
@@ -459,6 +467,138 @@ private:
             ++stats.pairedTriangles;
         }
     }
+    // Triangles left in different places (e.g. two loops of odd length) are brought together
+    // through the quads between them: a triangle and the quad it touches form a pentagon, re-split
+    // into a quad and a triangle that touches another face; when the triangle reaches another
+    // triangle the two merge into a quad. A breadth-first search over these moves (simulated on
+    // vertex positions, every intermediate quad checked) finds a sequence, which is then applied.
+    // Connectivity only: no node moves, no new node.
+    struct Move {
+        std::array<int, 3> v;  // triangle, counter-clockwise
+        std::array<int, 3> e;  // half-edge of side v[k]->v[k+1] in the mesh, -1 for a new diagonal
+        int face;              // face entered (the triangle's own face for the start)
+        int option;            // pentagon split used to get here
+        int parent;
+    };
+
+    // The pentagon formed by triangle `t` (its side k shared with quad across) and that quad:
+    // vertices and side half-edges, counter-clockwise, as MigrateStep builds it.
+    void Pentagon(const Move &t, int k, std::array<int, 5> &v, std::array<int, 5> &e) const
+    {
+        int tw = m.heTwin[t.e[k]];
+        e = {t.e[(k + 1) % 3], t.e[(k + 2) % 3], m.heNext[tw], m.heNext[m.heNext[tw]], m.hePrev[tw]};
+        v = {t.v[(k + 1) % 3], t.v[(k + 2) % 3], t.v[k], m.Org(e[3]), m.Org(e[4])};
+    }
+
+    bool SplitIsValid(const std::array<int, 5> &v, int i, const P3 &n) const
+    {
+        for (int a = 0; a < 5; ++a)
+            for (int b = a + 1; b < 5; ++b)
+                if (v[a] == v[b]) return false;
+        int a = v[i], b = v[(i + 1) % 5], c = v[(i + 2) % 5], d = v[(i + 3) % 5], e = v[(i + 4) % 5];
+        return !m.EdgeExists(a, c) && TriPositive(a, b, c, n) && QuadQuality(c, d, e, a, n) > p.migrationMinJacobian;
+    }
+
+    void MigrateTrianglesIntoPairs()
+    {
+        std::vector<char> gaveUp;
+        for (int round = 0; round < 100000; ++round) {
+            int tri = -1;
+            for (int f = 0; f < m.FaceCount() && tri < 0; ++f)
+                if (m.FaceAlive(f) && m.IsTri(f) && (f >= int(gaveUp.size()) || !gaveUp[f])) tri = f;
+            if (tri < 0) return;
+            std::vector<Move> moves;
+            int goal = -1, goalSide = -1;
+            if (!SearchMigration(tri, moves, goal, goalSide)) {
+                if (int(gaveUp.size()) < m.FaceCount()) gaveUp.resize(m.FaceCount(), 0);
+                gaveUp[tri] = 1;
+                continue;
+            }
+            std::vector<int> chain;
+            for (int s = goal; s >= 0; s = moves[s].parent) chain.push_back(s);
+            std::reverse(chain.begin(), chain.end());
+            int current = tri;
+            for (size_t i = 1; i < chain.size() && current >= 0; ++i)
+                current = MigrateStep(current, moves[chain[i]].face, moves[chain[i]].option);
+            int target = current >= 0 ? m.heFace[m.heTwin[moves[goal].e[goalSide]]] : -1;
+            int shared = current >= 0 ? SharedHalfEdge(current, target) : -1;
+            if (shared < 0) return;  // cannot happen: the search simulated exactly these steps
+            m.MergeTriangles(shared, 0);
+            ++stats.pairedTriangles;
+        }
+    }
+
+    bool SearchMigration(int tri, std::vector<Move> &moves, int &goal, int &goalSide) const
+    {
+        Move start;
+        int g = m.faceHe[tri];
+        for (int k = 0; k < 3; ++k, g = m.heNext[g]) { start.v[k] = m.Org(g); start.e[k] = g; }
+        start.face = tri;
+        start.option = -1;
+        start.parent = -1;
+        moves.assign(1, start);
+        std::vector<int> usedFaces{tri};
+        for (size_t head = 0; head < moves.size() && moves.size() < 30000; ++head) {
+            const Move t = moves[head];
+            int depth = 0;
+            for (int s = int(head); s >= 0; s = moves[s].parent) ++depth;
+            if (depth > 24) continue;
+            for (int k = 0; k < 3; ++k) {
+                if (t.e[k] < 0 || m.heTwin[t.e[k]] < 0) continue;
+                int face = m.heFace[m.heTwin[t.e[k]]];
+                bool onPath = false;
+                for (int s = int(head); s >= 0 && !onPath; s = moves[s].parent) onPath = moves[s].face == face;
+                if (onPath) continue;
+                P3 n = m.FaceNormal(face) + m.FaceNormal(t.face);
+                if (m.IsTri(face)) {
+                    int w = m.Org(m.hePrev[m.heTwin[t.e[k]]]);  // the other triangle's apex
+                    if (face != tri && QuadQuality(t.v[(k + 1) % 3], t.v[(k + 2) % 3], t.v[k], w, n) > p.migrationMinJacobian) {
+                        goal = int(head);
+                        goalSide = k;
+                        return true;
+                    }
+                    continue;
+                }
+                // a face may be crossed by a few different triangles (other pentagon splits)
+                if (std::count(usedFaces.begin(), usedFaces.end(), face) >= 4) continue;
+                usedFaces.push_back(face);
+                std::array<int, 5> v, e;
+                Pentagon(t, k, v, e);
+                for (int i = 0; i < 5; ++i) {
+                    if (!SplitIsValid(v, i, n)) continue;
+                    Move next;
+                    next.v = {v[i], v[(i + 1) % 5], v[(i + 2) % 5]};
+                    next.e = {e[i], e[(i + 1) % 5], -1};
+                    next.face = face;
+                    next.option = i;
+                    next.parent = int(head);
+                    moves.push_back(next);
+                }
+            }
+        }
+        return false;
+    }
+
+    int SharedHalfEdge(int f, int g) const
+    {
+        int h = m.faceHe[f];
+        for (int k = 0; k < m.faceSize[f]; ++k, h = m.heNext[h])
+            if (m.heTwin[h] >= 0 && m.heFace[m.heTwin[h]] == g) return h;
+        return -1;
+    }
+
+    // Triangle `tri` + adjacent quad `quad` -> triangle (pentagon positions option..option+2) + quad.
+    int MigrateStep(int tri, int quad, int option)
+    {
+        int shared = SharedHalfEdge(tri, quad);
+        if (shared < 0) return -1;
+        int t = m.heTwin[shared];
+        std::vector<int> loop{m.heNext[shared], m.hePrev[shared], m.heNext[t], m.heNext[m.heNext[t]], m.hePrev[t]};
+        const int i = option;
+        return m.ReplaceRegion(loop, {tri, quad}, {},
+                               {{i, (i + 1) % 5, (i + 2) % 5}, {(i + 2) % 5, (i + 3) % 5, (i + 4) % 5, i}}, m.faceLevel[quad]);
+    }
+
     double PairQuality(int h) const
     {
         int t = m.heTwin[h];
