@@ -253,6 +253,7 @@ private:
 
             qmorph::MixedMesh mm;
             mm.Build(pts, ltri, lcut);
+            for (size_t v = 0; v < globalOf.size(); ++v) mm.vertKey[v] = globalOf[v];
             SurfaceProjector surface;
             surface.Build(pts, ltri);
             if (hasFront) {
@@ -320,6 +321,10 @@ private:
         size_t triCount = 0;
         for (auto &of : outFaces) triCount += of[0] == 4 ? 2 : 1;
         auto resolve = [&](int id) { return id >= 0 ? id : firstNew + (-id - 1); };
+        // polygon sides, so a quad is never split along a diagonal that is an edge elsewhere
+        std::unordered_set<uint64_t> sides;
+        for (const auto &of : outFaces)
+            for (int k = 0; k < of[0]; ++k) sides.insert(Key(resolve(of[1 + k]), resolve(of[1 + (k + 1) % of[0]])));
         auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, triCount);
         auto setFace = [&](FaceType &f, int a, int b, int c, float q) {
             f.V(0) = &m.vert[a];
@@ -344,6 +349,8 @@ private:
             P3 pa = P3::Construct(m.vert[a].cP()), pb = P3::Construct(m.vert[b].cP()), pc = P3::Construct(m.vert[c].cP()),
                pd = P3::Construct(m.vert[d].cP());
             bool acDiagonal = std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
+            if (sides.count(Key(a, c))) acDiagonal = false;
+            else if (sides.count(Key(b, d))) acDiagonal = true;
             if (acDiagonal) {
                 setFace(*fi, a, b, c, outQuality[i]); fi->SetF(2); ++fi;  // c->a faux
                 setFace(*fi, a, c, d, outQuality[i]); fi->SetF(0); ++fi;  // a->c faux

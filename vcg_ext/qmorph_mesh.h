@@ -36,6 +36,8 @@ public:
     std::vector<int> vertHe;      // an outgoing half-edge (a boundary one when the vertex is on the boundary)
     std::vector<char> vertFixed;  // initial-front nodes: never moved, never removed
     std::vector<char> vertAlive;
+    std::vector<int> vertKey;     // which input vertex a node is (copies of a vertex cut by the front
+                                  // share it); new nodes get a key of their own
     // half-edges
     std::vector<int> heVert, heNext, hePrev, heTwin, heFace;  // heFace < 0: dead
     std::vector<char> heInitial;  // on the initial front (patch boundary): never flipped, split or merged
@@ -46,6 +48,16 @@ public:
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }
     int FaceCount() const { return int(faceHe.size()); }
+
+    // Distinct input vertices (two copies of one vertex, split by the front, are the same node
+    // once the patches are put back together: a face must not use both).
+    bool DistinctNodes(std::initializer_list<int> vs) const
+    {
+        for (auto a = vs.begin(); a != vs.end(); ++a)
+            for (auto b = a + 1; b != vs.end(); ++b)
+                if (vertKey[*a] == vertKey[*b]) return false;
+        return true;
+    }
 
     bool HeAlive(int h) const { return h >= 0 && heFace[h] >= 0; }
     bool FaceAlive(int f) const { return f >= 0 && faceSize[f] > 0; }
@@ -66,6 +78,8 @@ public:
         vertHe.assign(pos.size(), -1);
         vertFixed.assign(pos.size(), 0);
         vertAlive.assign(pos.size(), 1);
+        vertKey.resize(pos.size());
+        for (size_t v = 0; v < pos.size(); ++v) vertKey[v] = int(v);
         heVert.clear(); heNext.clear(); hePrev.clear(); heTwin.clear(); heFace.clear(); heInitial.clear();
         faceHe.clear(); faceSize.clear(); faceLevel.clear();
         for (auto &t : tris) AddFace({t[0], t[1], t[2]}, 3);
@@ -111,6 +125,35 @@ public:
         return found;
     }
     bool EdgeExists(int a, int b) const { return FindHalfEdge(a, b) >= 0 || FindHalfEdge(b, a) >= 0; }
+
+    // Are a and b opposite corners of a quad? (an edge a-b would then duplicate that quad's
+    // diagonal once quads are written as triangle pairs)
+    bool OppositeInQuad(int a, int b) const
+    {
+        bool found = false;
+        ForEachOutgoing(a, [&](int h) {
+            if (IsQuad(heFace[h]) && Dst(heNext[h]) == b) found = true;
+        });
+        return found;
+    }
+
+    // Is there an edge a-b not interior to the given faces (which are about to be replaced)?
+    bool EdgeOutside(int a, int b, const std::vector<int> &faces) const
+    {
+        int h = FindHalfEdge(a, b);
+        if (h < 0) h = FindHalfEdge(b, a);
+        if (h < 0) return false;
+        int t = heTwin[h];
+        auto inside = [&](int f) { return std::find(faces.begin(), faces.end(), f) != faces.end(); };
+        return !(inside(heFace[h]) && t >= 0 && inside(heFace[t]));
+    }
+
+    // A quad (a b c d) replacing `faces` can be written as two triangles when one of its diagonals
+    // is not already an edge elsewhere.
+    bool QuadHasFreeDiagonal(int a, int b, int c, int d, const std::vector<int> &faces) const
+    {
+        return !EdgeOutside(a, c, faces) || !EdgeOutside(b, d, faces);
+    }
 
     int Valence(int v) const
     {
@@ -189,6 +232,7 @@ public:
         vertHe.push_back(-1);
         vertFixed.push_back(0);
         vertAlive.push_back(1);
+        vertKey.push_back(-VertexCount());  // negative: never equal to an input vertex index
         return VertexCount() - 1;
     }
 
@@ -237,7 +281,7 @@ public:
         int t = heTwin[h];
         if (t < 0 || heInitial[h] || !IsTri(heFace[h]) || !IsTri(heFace[t])) return false;
         int a = Org(h), b = Dst(h), c = Org(hePrev[h]), d = Org(hePrev[t]);
-        if (c == d || EdgeExists(c, d)) return false;
+        if (c == d || EdgeExists(c, d) || OppositeInQuad(c, d)) return false;
         P3 n = (FaceNormal(heFace[h]) + FaceNormal(heFace[t]));
         if (!(n.Norm() > 0)) return false;
         // the new triangles (c a d) and (d b c) must be positive

@@ -134,6 +134,7 @@ private:
     // Scaled Jacobian of the quad (a b c d) against reference normal n (<= 0: inverted).
     double QuadQuality(int a, int b, int c, int d, const P3 &n) const
     {
+        if (!m.DistinctNodes({a, b, c, d})) return -1;
         const int v[4] = {a, b, c, d};
         P3 N(0, 0, 0);
         for (int k = 0; k < 4; ++k) N += m.pos[v[k]] ^ m.pos[v[(k + 1) % 4]];
@@ -150,7 +151,7 @@ private:
     }
     bool TriPositive(int a, int b, int c, const P3 &n) const
     {
-        return ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
+        return m.DistinctNodes({a, b, c}) && ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
     }
 
     int NewVertexOnEdge(int h, const P3 &point)
@@ -318,6 +319,7 @@ private:
         if (QuadQuality(a, b, c, d, n) <= p.minQuadJacobian) return false;
         std::vector<int> faces, inner;
         if (!m.EnclosedTriangles(loop, faces, inner)) return false;
+        if (!m.QuadHasFreeDiagonal(a, b, c, d, faces)) return false;
         int q = m.MakeQuad(loop, faces, inner, front.Level(h) + 1);
         ++stats.quadsFormed;
         AfterNewFaces({q}, {c, d});
@@ -366,7 +368,7 @@ private:
         if (int(loop.size()) != len) return false;
         for (size_t i = 0; i < loop.size(); ++i)
             for (size_t j = i + 1; j < loop.size(); ++j)
-                if (m.Org(loop[i]) == m.Org(loop[j])) return false;  // the loop touches itself
+                if (m.vertKey[m.Org(loop[i])] == m.vertKey[m.Org(loop[j])]) return false;  // the loop touches itself
         std::vector<int> faces, inner;
         if (!RegionInside(loop, faces, inner)) return false;
         if (inner.size() > 2) return false;  // a large region behind a short loop: advance into it instead
@@ -400,6 +402,13 @@ private:
             }
         }
         if (bestPolys.empty()) return false;
+        for (const auto &poly : bestPolys) {
+            for (size_t k = 0; k < poly.size(); ++k) {
+                int i = poly[k], j = poly[(k + 1) % poly.size()];
+                if (j != (i + 1) % L && m.EdgeOutside(v[i], v[j], faces)) return false;  // the new diagonal exists
+            }
+            if (poly.size() == 4 && !m.QuadHasFreeDiagonal(v[poly[0]], v[poly[1]], v[poly[2]], v[poly[3]], faces)) return false;
+        }
         int level = 0;
         for (int e : loop) level = std::max(level, front.Level(e));
         int first = m.ReplaceRegion(loop, faces, inner, bestPolys, level + 1);
@@ -494,9 +503,15 @@ private:
     {
         for (int a = 0; a < 5; ++a)
             for (int b = a + 1; b < 5; ++b)
-                if (v[a] == v[b]) return false;
+                if (m.vertKey[v[a]] == m.vertKey[v[b]]) return false;
         int a = v[i], b = v[(i + 1) % 5], c = v[(i + 2) % 5], d = v[(i + 3) % 5], e = v[(i + 4) % 5];
-        return !m.EdgeExists(a, c) && TriPositive(a, b, c, n) && QuadQuality(c, d, e, a, n) > p.migrationMinJacobian;
+        // the quad's diagonals must not be edges already (except the edge being removed, v[0]-v[2])
+        auto taken = [&](int x, int y) {
+            bool removed = (x == v[0] && y == v[2]) || (x == v[2] && y == v[0]);
+            return !removed && m.EdgeExists(x, y);
+        };
+        return !m.EdgeExists(a, c) && TriPositive(a, b, c, n) && QuadQuality(c, d, e, a, n) > p.migrationMinJacobian &&
+               !(taken(c, e) && taken(d, a));
     }
 
     void MigrateTrianglesIntoPairs()
@@ -603,6 +618,7 @@ private:
     {
         int t = m.heTwin[h];
         int a = m.Org(h), b = m.Dst(h), c = m.Org(m.hePrev[h]), d = m.Org(m.hePrev[t]);
+        if (!m.QuadHasFreeDiagonal(b, c, a, d, {m.heFace[h], m.heFace[t]})) return -1;
         P3 n = m.FaceNormal(m.heFace[h]) + m.FaceNormal(m.heFace[t]);
         return QuadQuality(b, c, a, d, n);
     }
@@ -628,7 +644,7 @@ private:
         int h1 = out[0], h2 = out[1];
         int a = m.Dst(h1), b = m.Dst(m.heNext[h1]), c = m.Dst(h2), d = m.Dst(m.heNext[h2]);
         P3 n = m.FaceNormal(m.heFace[h1]) + m.FaceNormal(m.heFace[h2]);
-        return QuadQuality(a, b, c, d, n) > p.minQuadJacobian;
+        return QuadQuality(a, b, c, d, n) > p.minQuadJacobian && m.QuadHasFreeDiagonal(a, b, c, d, {m.heFace[h1], m.heFace[h2]});
     }
 
     // ---- smoothing ------------------------------------------------------------------------------
