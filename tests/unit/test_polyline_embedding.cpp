@@ -247,6 +247,7 @@ TEST(PolylineEmbedding, PlaneSectionWithPointsInsideEdgesOnAJitteredCube)
     MakeCube(m, 7, 0.35f, 5);
     Copy(before, m);
     ASSERT_TRUE(PlaneSectionPolyline(m, D3(0.3, 0.2, 1).Normalize(), 0.137, poly));
+    for (size_t f = 0; f < m.face.size(); f += 7) m.face[f].Flags() |= TFace::FAUX0 | TFace::FACEEDGESEL1;  // cleared
     ASSERT_GT(poly.en, 20);
     Embedding::Result r = Embed(m, poly);
     ASSERT_EQ(r.error, "");
