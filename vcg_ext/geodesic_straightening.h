@@ -98,8 +98,8 @@ public:
 
     struct Result {
         std::string error;
-        int passes = 0;          // passes run (stops early once a pass changes nothing)
-        bool converged = false;  // the last pass changed nothing
+        int passes = 0;          // passes run (stops early once a pass shortens the paths by < 1e-9 of their length)
+        bool converged = false;  // stopped early: locally shortest within the moves and constraints
         int moves = 0;           // accepted moves (removals included)
         int removals = 0;        // redundant points removed
         int rejected = 0;        // shortening moves refused because they would break an invariant
@@ -110,6 +110,9 @@ public:
     };
 
     // Straightens the paths in place; `cb` gets percentages from `progressFrom` to `progressTo`.
+    // The paths must be valid: consecutive points share a face, no point shared by two paths
+    // except fixed ones at vertices, no crossings (boundary chains of mesh edges are). The ends of
+    // open paths never move; a closed path without a fixed point gets its first point fixed.
     static Result Straighten(const Topology &t, std::vector<SurfacePath> &paths, const Params &p,
                              vcg::CallBackPos *cb = nullptr, int progressFrom = 0, int progressTo = 100)
     {
@@ -317,6 +320,7 @@ private:
         {
             siteHead.assign(size_t(t.vertexCount) + t.EdgeCount(), -1);
             heads.clear();
+            nodes.clear();
             for (size_t i = 0; i < paths.size(); ++i) {
                 const SurfacePath &path = paths[i];
                 const int n = int(path.points.size());
@@ -328,9 +332,9 @@ private:
                     if (anchor < 0 && nodes[id].fixed) anchor = id;
                     last = id;
                 }
-                closed.push_back(path.closed && n >= 3);
+                const bool loop = path.closed && n >= 3;
                 initialLength += Length(t, path);
-                if (closed.back()) {
+                if (loop) {
                     nodes[last].next = first;
                     nodes[first].prev = last;
                     if (anchor < 0) {  // a loop needs a fixed start: its first point
@@ -449,7 +453,6 @@ private:
         std::vector<Node> nodes;
         std::vector<int> siteHead;  // first node per site: vertices, then edges
         std::vector<int> heads;     // per path: its first node (open) or a fixed node (closed)
-        std::vector<char> closed;
         double initialLength = 0, gain = 0;
         // Scratch.
         Fan fan;

@@ -35,7 +35,7 @@ public:
     typedef typename MeshType::FaceType FaceType;
     typedef vcg::Point3<double> Vec;
 
-    enum EdgeKind : char { Border = 1, Manifold = 2, NonManifold = 3, Degenerate = 4 };
+    enum EdgeKind : char { Border = 1, Manifold = 2, NonManifold = 3 };
 
     // Faces around a vertex v in order: face j has the corners v, ring[j], ring[j + 1] and the
     // corner angle angle[j] at v; start[j] is the sum of the angles before face j (so spoke j,
@@ -57,14 +57,15 @@ public:
     const MeshType *mesh = nullptr;
     int vertexCount = 0;                       // size of m.vert (deleted vertices included)
     int faceCount = 0;                         // size of m.face (deleted faces included)
-    std::vector<std::array<int, 3>> faceVerts; // vertex indices per face, {-1,-1,-1} when deleted
+    std::vector<std::array<int, 3>> faceVerts; // vertex indices per face, {-1,-1,-1} when deleted or ignored
+    int ignoredFaces = 0;                      // live faces with a repeated vertex: left out (no edges, no area)
     std::vector<int> vertFaceStart, vertFaces; // live faces around each vertex (CSR)
     std::vector<int> edgeOf;                   // edge id per half-edge, -1 for deleted faces
     std::vector<int> twin;                     // the other half-edge of a manifold edge, else -1
     std::vector<std::array<int, 2>> edgeVerts; // end points per edge: edge parameters run from [0] to [1]
     std::vector<int> edgeHalf;                 // a half-edge of each edge
     std::vector<char> edgeKind;                // EdgeKind per edge
-    std::vector<char> vertOnBorder;            // vertex touches a border, non-manifold or degenerate edge
+    std::vector<char> vertOnBorder;            // vertex touches a border or non-manifold edge
 
     // O(F): the sum over face edges of one end point's face count.
     void Build(const MeshType &m)
@@ -74,12 +75,15 @@ public:
         faceCount = int(m.face.size());
         faceVerts.assign(faceCount, {-1, -1, -1});
         std::vector<int> count(vertexCount + 1, 0);
+        ignoredFaces = 0;
         for (int f = 0; f < faceCount; ++f) {
             const FaceType &face = m.face[f];
             if (face.IsD()) continue;
-            for (int k = 0; k < 3; ++k) faceVerts[f][k] = int(vcg::tri::Index(m, face.cV(k)));
-            for (int k = 0; k < 3; ++k)
-                if (!Repeated(f, k)) ++count[faceVerts[f][k]];
+            std::array<int, 3> v;
+            for (int k = 0; k < 3; ++k) v[k] = int(vcg::tri::Index(m, face.cV(k)));
+            if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) { ++ignoredFaces; continue; }  // no edges, no area
+            faceVerts[f] = v;
+            for (int k = 0; k < 3; ++k) ++count[v[k]];
         }
         vertFaceStart.assign(vertexCount + 1, 0);
         for (int v = 0; v < vertexCount; ++v) vertFaceStart[v + 1] = vertFaceStart[v] + count[v];
@@ -87,8 +91,7 @@ public:
         std::vector<int> fill(vertFaceStart.begin(), vertFaceStart.end() - 1);
         for (int f = 0; f < faceCount; ++f)
             if (faceVerts[f][0] >= 0)
-                for (int k = 0; k < 3; ++k)
-                    if (!Repeated(f, k)) vertFaces[fill[faceVerts[f][k]]++] = f;
+                for (int k = 0; k < 3; ++k) vertFaces[fill[faceVerts[f][k]]++] = f;
 
         edgeOf.assign(3 * size_t(faceCount), -1);
         twin.assign(3 * size_t(faceCount), -1);
@@ -107,7 +110,6 @@ public:
                 edgeVerts.push_back({a, b});
                 edgeHalf.push_back(h);
                 edgeOf[h] = id;
-                if (a == b) { edgeKind.push_back(Degenerate); vertOnBorder[a] = 1; continue; }
                 others.clear();  // the same edge in the other faces around a
                 for (int i = vertFaceStart[a]; i < vertFaceStart[a + 1]; ++i) {
                     int g = vertFaces[i];
@@ -258,10 +260,6 @@ public:
     }
 
 private:
-    bool Repeated(int f, int k) const  // vertex k already appeared earlier in face f
-    {
-        return (k >= 1 && faceVerts[f][k] == faceVerts[f][0]) || (k == 2 && faceVerts[f][2] == faceVerts[f][1]);
-    }
     // The face across the edge v-w of face f: -1 across a border, -2 when not manifold.
     int Across(int f, int v, int w) const
     {
@@ -323,7 +321,7 @@ public:
         int nonManifold = 0;
         std::vector<int> degree(t.vertexCount, 0);
         for (int e = 0; e < E; ++e) {
-            if (t.edgeKind[e] == Topology::Border || t.edgeKind[e] == Topology::Degenerate) continue;
+            if (t.edgeKind[e] == Topology::Border) continue;
             if (t.edgeKind[e] == Topology::NonManifold) {
                 if (!SameRegionAround(t, faceRegion, e)) ++nonManifold;
                 continue;

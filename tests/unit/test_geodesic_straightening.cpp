@@ -184,6 +184,17 @@ TEST(GeodesicStraightening, CylinderCapsAndBandKeepInvariantsAndRegionPairs)
     ExpectSameEnds(raw, many);
     ExpectInvariants(m, many, 0.1);
     EXPECT_LE(many.lengthAfter, r.lengthAfter);
+    // Region pairs kept: the vertex patches left and right of each curve carry its two regions.
+    for (const Smoothing::Result *res : {&r, &many}) {
+        VertexPatches patches = ComputePatches(m, res->topology, res->curves, region);
+        for (const auto &c : res->curves) {
+            std::map<int, int> left, right;
+            SideLabels(m, res->topology, c.path, patches, 3, left, right);
+            ASSERT_FALSE(left.empty() || right.empty());
+            EXPECT_EQ(Majority(left), c.regionLeft);
+            EXPECT_EQ(Majority(right), c.regionRight);
+        }
+    }
 }
 
 TEST(GeodesicStraightening, ClosedLoopsAreAnchoredAndDoNotVanish)
@@ -259,6 +270,68 @@ TEST(GeodesicStraightening, RealMeshInvariants)
         EXPECT_EQ(Majority(right), c.regionRight);
     }
     EXPECT_GT(checked, int(r.curves.size()) * 3 / 4);
+}
+
+// Two paths from c1 to c2 across the edge a-b of two triangles, A at 0.3 and B at 0.6 along it;
+// both want to go to 0.8. A may not pass B: their segments only meet at the shared ends, so only
+// the order along the edge tells that A would jump over B (and swap the regions between them).
+TEST(GeodesicStraightening, TwoPathsThroughOneEdgeKeepTheirOrder)
+{
+    TMesh m;
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0.8f, 1, 0), P3(0.8f, -1, 0)}, {{0, 1, 2}, {1, 0, 3}});
+    Topo t;
+    t.Build(m);
+    const int e = t.EdgeBetween(0, 1);
+    ASSERT_GE(e, 0);
+    auto along = [&](double s) { return SP::OnEdge(e, t.edgeVerts[e][0] == 0 ? s : 1 - s); };  // s from vertex 0
+    auto param = [&](const SP &q) { return t.edgeVerts[e][0] == 0 ? q.t : 1 - q.t; };
+    std::vector<vcg_ext::SurfacePath> paths(2);
+    paths[0].points = {SP::AtVertex(2), along(0.3), SP::AtVertex(3)};
+    paths[1].points = {SP::AtVertex(2), along(0.6), SP::AtVertex(3)};
+    for (auto &p : paths) p.fixed = {1, 0, 1};
+    Straight::Params p;
+    p.iterations = 10;
+    Straight::Result r = Straight::Straighten(t, paths, p);
+    ASSERT_EQ(r.error, "");
+    ASSERT_EQ(paths[0].points.size(), 3u);
+    ASSERT_EQ(paths[1].points.size(), 3u);
+    EXPECT_NEAR(param(paths[1].points[1]), 0.8, 1e-6) << "B reaches the straight line (float coordinates)";
+    EXPECT_LT(param(paths[0].points[1]), param(paths[1].points[1])) << "A stays on its side of B";
+    EXPECT_GE(param(paths[1].points[1]) - param(paths[0].points[1]), 0.1 - 1e-12) << "the gap: the snap distance";
+    EXPECT_GT(r.rejected, 0);
+}
+
+// Random Voronoi-like labellings (ids modulo 3: regions touching themselves, ids on several
+// patches) on a closed and an open mesh: every run keeps every invariant and never lengthens.
+TEST(GeodesicStraightening, RandomLabellingsKeepTheInvariants)
+{
+    TMesh sphere, grid;
+    MakeSphere(sphere, 3);
+    MakeGrid(grid, 16, 1.f, 0.3f, 4);
+    std::mt19937 rng(7);
+    for (TMesh *m : {&sphere, &grid})
+        for (int trial = 0; trial < 3; ++trial) {
+            const int k = 5 + int(rng() % 25);
+            std::vector<int> seeds;
+            for (int i = 0; i < k; ++i) seeds.push_back(int(rng() % m->face.size()));
+            auto region = SetRegions(*m, [&](int f) {
+                int best = 0;
+                double bd = 1e30;
+                for (int i = 0; i < k; ++i) {
+                    double d = (Centroid(*m, f) - Centroid(*m, seeds[i])).SquaredNorm();
+                    if (d < bd) { bd = d; best = i; }
+                }
+                return trial == 2 ? best % 3 : best;
+            });
+            for (int iterations : {3, 100})
+                for (double snap : {10.0, 30.0}) {
+                    SCOPED_TRACE(std::to_string(trial) + " " + std::to_string(iterations) + " " + std::to_string(snap));
+                    Smoothing::Result r = RunSmoothing(*m, region, iterations, snap);
+                    ASSERT_EQ(r.error, "");
+                    EXPECT_LE(r.lengthAfter, r.lengthBefore);
+                    ExpectInvariants(*m, r, snap / 100);
+                }
+        }
 }
 
 TEST(GeodesicStraightening, RefusesBadInput)

@@ -257,3 +257,25 @@ TEST(MergeSmallRegions, TinyRegionJoinsTheNeighbourWithTheLongestSharedBoundary)
     EXPECT_EQ(vcg_ext::MergeSmallRegions(t, region, 0, &merged), region);
     EXPECT_EQ(merged, 0);
 }
+
+TEST(MeshEdgeTopology, FacesWithARepeatedVertexAreLeftOut)
+{
+    const int n = 4;
+    TMesh m;
+    MakeGrid(m, n);
+    Topo clean;
+    clean.Build(m);
+    auto fi = vcg::tri::Allocator<TMesh>::AddFaces(m, 1);  // (a, a, b): AddFace() would assert
+    fi->V(0) = &m.vert[6];
+    fi->V(1) = &m.vert[6];
+    fi->V(2) = &m.vert[7];
+    Topo t;
+    t.Build(m);
+    EXPECT_EQ(t.ignoredFaces, 1);
+    EXPECT_EQ(t.EdgeCount(), clean.EdgeCount());
+    EXPECT_EQ(t.FacesAround(6), clean.FacesAround(6));
+    auto region = SetRegions(m, [&](int f) { return f < 2 * n * n ? (f % (2 * n) < n ? 0 : 1) : 5; });
+    Graph g = Graph::Build(t, region);
+    ASSERT_EQ(g.error, "");
+    EXPECT_EQ(g.regions, 2) << "the left-out face's id does not count";
+}
