@@ -338,3 +338,34 @@ TEST(SplitPlugin, PipelineOnFandiskAndElephant)
         ExpectSplitInvariants(before, after, polyline);
     }
 }
+
+// The front saved as OBJ (6 decimals) and loaded back as a layer splits the mesh the same way.
+TEST(SplitPlugin, FrontReadBackWithSixDecimalsGivesTheSameSplit)
+{
+    PluginHarness exact, rounded;
+    for (PluginHarness *h : {&exact, &rounded}) {
+        ASSERT_NE(LoadTriangleOff(*h, MeshDir() + "/elephant.off"), nullptr);
+        ASSERT_TRUE(h->Apply(kVsa).ok);
+        ASSERT_TRUE(RunFilter(*h, kSmooth).ok);
+    }
+    MeshModel *front = Layer(rounded, "mesh_front");
+    TMesh poly, back;
+    ToPolyline(front->cm, poly);
+    RoundTripObj6(poly, back);
+    int moved = 0;
+    for (int i = 0; i < front->cm.vn; ++i) {
+        moved += front->cm.vert[i].P() != back.vert[i].P();
+        front->cm.vert[i].P() = back.vert[i].P();
+    }
+    EXPECT_GT(moved, front->cm.vn / 2) << "the 6-decimal round trip moves the points off their edges";
+    FilterRun a = RunFilter(exact, kSplit), b = RunFilter(rounded, kSplit);
+    ASSERT_TRUE(a.ok) << a.error;
+    ASSERT_TRUE(b.ok) << b.error;
+    ASSERT_EQ(a.log.size(), b.log.size());
+    for (size_t i = 0; i < a.log.size(); ++i) {  // same counts (the timing differs)
+        const std::string la = a.log[i].substr(0, a.log[i].find(" deg;")), lb = b.log[i].substr(0, b.log[i].find(" deg;"));
+        EXPECT_EQ(la.substr(0, la.rfind("min angle")), lb.substr(0, lb.rfind("min angle")));
+    }
+    EXPECT_EQ(exact.doc.mm()->cm.fn, rounded.doc.mm()->cm.fn);
+    EXPECT_EQ(vcg_ext::FrontEdges<CMeshO>::Collect(exact.doc.mm()->cm), vcg_ext::FrontEdges<CMeshO>::Collect(rounded.doc.mm()->cm));
+}
