@@ -253,7 +253,7 @@ private:
 
             qmorph::MixedMesh mm;
             mm.Build(pts, ltri, lcut);
-            for (size_t v = 0; v < globalOf.size(); ++v) mm.vertKey[v] = globalOf[v];
+            mm.SetKeys(globalOf);
             SurfaceProjector surface;
             surface.Build(pts, ltri);
             if (hasFront) {
@@ -321,7 +321,7 @@ private:
         size_t triCount = 0;
         for (auto &of : outFaces) triCount += of[0] == 4 ? 2 : 1;
         auto resolve = [&](int id) { return id >= 0 ? id : firstNew + (-id - 1); };
-        // polygon sides, so a quad is never split along a diagonal that is an edge elsewhere
+        // polygon sides and chosen diagonals, so a quad is never split along an edge that exists elsewhere
         std::unordered_set<uint64_t> sides;
         for (const auto &of : outFaces)
             for (int k = 0; k < of[0]; ++k) sides.insert(Key(resolve(of[1 + k]), resolve(of[1 + (k + 1) % of[0]])));
@@ -351,6 +351,7 @@ private:
             bool acDiagonal = std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
             if (sides.count(Key(a, c))) acDiagonal = false;
             else if (sides.count(Key(b, d))) acDiagonal = true;
+            sides.insert(acDiagonal ? Key(a, c) : Key(b, d));  // two quads around a doublet node must not share a diagonal
             if (acDiagonal) {
                 setFace(*fi, a, b, c, outQuality[i]); fi->SetF(2); ++fi;  // c->a faux
                 setFace(*fi, a, c, d, outQuality[i]); fi->SetF(0); ++fi;  // a->c faux

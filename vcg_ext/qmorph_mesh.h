@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include <vcg/space/point3.h>
@@ -38,6 +39,7 @@ public:
     std::vector<char> vertAlive;
     std::vector<int> vertKey;     // which input vertex a node is (copies of a vertex cut by the front
                                   // share it); new nodes get a key of their own
+    std::unordered_map<int, std::vector<int>> copiesOfKey;  // keys held by several nodes
     // half-edges
     std::vector<int> heVert, heNext, hePrev, heTwin, heFace;  // heFace < 0: dead
     std::vector<char> heInitial;  // on the initial front (patch boundary): never flipped, split or merged
@@ -51,6 +53,34 @@ public:
 
     // Distinct input vertices (two copies of one vertex, split by the front, are the same node
     // once the patches are put back together: a face must not use both).
+    // Declares which input vertex each node is (after Build); copies of one vertex share a key.
+    void SetKeys(const std::vector<int> &keys)
+    {
+        std::unordered_map<int, std::vector<int>> all;
+        for (size_t v = 0; v < keys.size(); ++v) {
+            vertKey[v] = keys[v];
+            all[keys[v]].push_back(int(v));
+        }
+        copiesOfKey.clear();
+        for (auto &kv : all)
+            if (kv.second.size() > 1) copiesOfKey.emplace(kv.first, kv.second);
+    }
+
+    // Calls f(h) for every half-edge between the nodes of a's key and the nodes of b's key.
+    template <class F>
+    void ForEachEdgeBetween(int a, int b, F f) const
+    {
+        auto nodes = [&](int v) {
+            auto it = copiesOfKey.find(vertKey[v]);
+            return it == copiesOfKey.end() ? std::vector<int>{v} : it->second;
+        };
+        const int ka = vertKey[a], kb = vertKey[b];
+        for (int x : nodes(a))
+            if (vertAlive[x]) ForEachOutgoing(x, [&](int h) { if (vertKey[Dst(h)] == kb) f(h); });
+        for (int y : nodes(b))
+            if (vertAlive[y]) ForEachOutgoing(y, [&](int h) { if (vertKey[Dst(h)] == ka) f(h); });
+    }
+
     bool DistinctNodes(std::initializer_list<int> vs) const
     {
         for (auto a = vs.begin(); a != vs.end(); ++a)
@@ -124,28 +154,39 @@ public:
         ForEachOutgoing(a, [&](int h) { if (Dst(h) == b) found = h; });
         return found;
     }
-    bool EdgeExists(int a, int b) const { return FindHalfEdge(a, b) >= 0 || FindHalfEdge(b, a) >= 0; }
+    // Is a-b an edge, counting copies of the same input vertex as one node?
+    bool EdgeExists(int a, int b) const
+    {
+        bool found = false;
+        ForEachEdgeBetween(a, b, [&](int) { found = true; });
+        return found;
+    }
 
     // Are a and b opposite corners of a quad? (an edge a-b would then duplicate that quad's
     // diagonal once quads are written as triangle pairs)
     bool OppositeInQuad(int a, int b) const
     {
+        auto it = copiesOfKey.find(vertKey[a]);
+        std::vector<int> nodes = it == copiesOfKey.end() ? std::vector<int>{a} : it->second;
         bool found = false;
-        ForEachOutgoing(a, [&](int h) {
-            if (IsQuad(heFace[h]) && Dst(heNext[h]) == b) found = true;
-        });
+        for (int x : nodes)
+            if (vertAlive[x])
+                ForEachOutgoing(x, [&](int h) {
+                    if (IsQuad(heFace[h]) && vertKey[Dst(heNext[h])] == vertKey[b]) found = true;
+                });
         return found;
     }
 
     // Is there an edge a-b not interior to the given faces (which are about to be replaced)?
     bool EdgeOutside(int a, int b, const std::vector<int> &faces) const
     {
-        int h = FindHalfEdge(a, b);
-        if (h < 0) h = FindHalfEdge(b, a);
-        if (h < 0) return false;
-        int t = heTwin[h];
         auto inside = [&](int f) { return std::find(faces.begin(), faces.end(), f) != faces.end(); };
-        return !(inside(heFace[h]) && t >= 0 && inside(heFace[t]));
+        bool outside = false;
+        ForEachEdgeBetween(a, b, [&](int h) {
+            int t = heTwin[h];
+            if (!(inside(heFace[h]) && t >= 0 && inside(heFace[t]))) outside = true;
+        });
+        return outside;
     }
 
     // A quad (a b c d) replacing `faces` can be written as two triangles when one of its diagonals
