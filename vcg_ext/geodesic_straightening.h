@@ -212,15 +212,21 @@ public:
     {
         const int n = int(path.points.size());
         double sum = 0;
+        Fan fan;
         for (int i = 0; i < n; ++i) {
             if (!path.closed && (i == 0 || i == n - 1)) continue;
             if (n < 3) continue;
-            sum += Turning(t, path.points[(i + n - 1) % n], path.points[i], path.points[(i + 1) % n]);
+            sum += Turning(t, path.points[(i + n - 1) % n], path.points[i], path.points[(i + 1) % n], fan);
         }
         return sum;
     }
 
     static double Turning(const Topology &t, const SurfacePoint &P, const SurfacePoint &X, const SurfacePoint &N)
+    {
+        Fan fan;
+        return Turning(t, P, X, N, fan);
+    }
+    static double Turning(const Topology &t, const SurfacePoint &P, const SurfacePoint &X, const SurfacePoint &N, Fan &fan)
     {
         if (!X.IsVertex() && !ShareFace(t, P, X, N)) {
             Vec2 p2, n2;
@@ -230,7 +236,6 @@ public:
                 return Angle2(x2 - p2, n2 - x2);
             }
         } else if (X.IsVertex()) {
-            Fan fan;
             double aP, rP, aN, rN;
             if (t.VertexFan(X.vertex, fan) && fan.closed && PolarInFan(t, fan, X.vertex, P, aP, rP) &&
                 PolarInFan(t, fan, X.vertex, N, aN, rN)) {
@@ -458,6 +463,7 @@ private:
         Fan fan;
         std::vector<SurfacePoint> candidate, sequence;
         std::vector<std::pair<int, int>> chords;
+        std::vector<std::pair<double, int>> crossed;  // (unfolded angle, spoke)
 
         int Site(const SurfacePoint &p) const { return p.IsVertex() ? p.vertex : t.vertexCount + p.edge; }
 
@@ -578,7 +584,7 @@ private:
             }
             if (!(side < M_PI - 1e-6) || !(side > 0)) return false;
             // Spokes strictly inside the side, by unfolded angle from P.
-            std::vector<std::pair<double, int>> crossed;
+            crossed.clear();
             for (int j = 0; j < fan.Spokes(); ++j) {
                 double b = dir * (fan.SpokeAngle(j) - aP);
                 if (fan.closed) b = Wrap(b, fan.total);

@@ -197,47 +197,44 @@ public:
         if (n == 0) return false;
         const int f0 = *FacesBegin(v);
         int c = CornerOf(f0, v);
-        // Forward: leave each face through the spoke to `out`.
-        std::vector<int> fwdFaces{f0}, fwdRing{faceVerts[f0][(c + 1) % 3], faceVerts[f0][(c + 2) % 3]};
+        // Forward: leave each face through the spoke to its last ring vertex (into fan's own
+        // vectors: fans are rebuilt for every vertex move, so no allocation once they have grown).
+        fan.faces.push_back(f0);
+        fan.ring.push_back(faceVerts[f0][(c + 1) % 3]);
+        fan.ring.push_back(faceVerts[f0][(c + 2) % 3]);
         int f = f0;
         for (;;) {
-            int out = fwdRing.back();
+            int out = fan.ring.back();
             int g = Across(f, v, out);
             if (g == -2) return false;
             if (g < 0) break;
             if (g == f0) { fan.closed = true; break; }
-            if (int(fwdFaces.size()) >= n) return false;
-            fwdFaces.push_back(g);
-            fwdRing.push_back(ThirdVertex(g, v, out));
+            if (int(fan.faces.size()) >= n) return false;
+            fan.faces.push_back(g);
+            fan.ring.push_back(ThirdVertex(g, v, out));
             f = g;
         }
         if (fan.closed) {
-            fwdRing.pop_back();  // back at the first ring vertex
+            fan.ring.pop_back();  // back at the first ring vertex
         } else {
-            // Backward from f0 through the spoke to its first ring vertex, prepended.
+            // Backward from f0 through the spoke to its first ring vertex, prepended (border vertices only).
             std::vector<int> backFaces, backRing;
             f = f0;
-            int in = fwdRing.front();
+            int in = fan.ring.front();
             for (;;) {
                 int g = Across(f, v, in);
                 if (g == -2) return false;
                 if (g < 0) break;
-                if (int(fwdFaces.size() + backFaces.size()) >= n) return false;
+                if (int(fan.faces.size() + backFaces.size()) >= n) return false;
                 backFaces.push_back(g);
                 in = ThirdVertex(g, v, in);
                 backRing.push_back(in);
                 f = g;
             }
-            std::reverse(backFaces.begin(), backFaces.end());
-            std::reverse(backRing.begin(), backRing.end());
-            backFaces.insert(backFaces.end(), fwdFaces.begin(), fwdFaces.end());
-            backRing.insert(backRing.end(), fwdRing.begin(), fwdRing.end());
-            fwdFaces.swap(backFaces);
-            fwdRing.swap(backRing);
+            fan.faces.insert(fan.faces.begin(), backFaces.rbegin(), backFaces.rend());
+            fan.ring.insert(fan.ring.begin(), backRing.rbegin(), backRing.rend());
         }
-        if (int(fwdFaces.size()) != n) return false;  // more than one fan
-        fan.faces = fwdFaces;
-        fan.ring = fwdRing;
+        if (int(fan.faces.size()) != n) return false;  // more than one fan
         fan.spokeEdge.resize(fan.ring.size());
         for (size_t j = 0; j < fan.ring.size(); ++j)
             fan.spokeEdge[j] = EdgeInFace(fan.faces[std::min(j, fan.faces.size() - 1)], v, fan.ring[j]);
