@@ -27,7 +27,7 @@ class SurfaceTracer
 {
 public:
     SurfaceTracer(const MeshType &mesh, const EmbeddingAdjacency &adjacency, double tolerance)
-        : m(mesh), adj(adjacency), tol(tolerance), visitStamp(adjacency.fv.size(), 0)
+        : m(mesh), adj(adjacency), tol(tolerance)
     {
     }
 
@@ -205,6 +205,7 @@ private:
     bool Walk(const SurfacePoint &a, const Step &firstStep, const SurfacePoint &b, int maxSteps, std::vector<SurfacePoint> &path)
     {
         path.clear();
+        if (visitStamp.empty()) visitStamp.assign(adj.fv.size(), 0);  // only when something needs tracing
         if (++stamp == 0) { std::fill(visitStamp.begin(), visitStamp.end(), 0); stamp = 1; }
         SurfacePoint prev = a;
         Step cur = firstStep;
