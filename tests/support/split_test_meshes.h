@@ -181,6 +181,7 @@ struct SplitExpectations {
     bool closedFront = true;        // the selected edges are exactly the region-id boundaries
     bool pointsInFaces = false;     // new vertices may lie inside input faces (user polylines)
     bool straightSegments = true;   // each polyline segment is embedded as a straight chain
+    bool segmentsAreEdges = false;  // each polyline segment is one selected mesh edge (no point inside it)
 };
 
 // Everything "Split Triangles along Front" promises, checked against the input mesh and polyline.
@@ -270,11 +271,12 @@ inline void ExpectSplitInvariants(const TMesh &before, const TMesh &after, const
         }
         return bd <= 3e-6 * diag ? best : -1;
     };
-    int missingChains = 0;
+    int missingChains = 0, notEdges = 0;
     for (const TEdge &e : poly.edge) {
         const int a = nearestVertex(e.cV(0)->cP()), b = nearestVertex(e.cV(1)->cP());
         if (a < 0 || b < 0) { ++missingChains; continue; }
         if (a == b) continue;
+        if (!selectedGraph[a].count(b)) ++notEdges;
         const D3 pa = D3::Construct(after.vert[a].cP()), pb = D3::Construct(after.vert[b].cP());
         auto onSegment = [&](int v) {
             const D3 p = D3::Construct(after.vert[v].cP());
@@ -293,6 +295,9 @@ inline void ExpectSplitInvariants(const TMesh &before, const TMesh &after, const
         if (!seen.count(b)) ++missingChains;
     }
     EXPECT_EQ(missingChains, 0) << "polyline segments that are not chains of selected mesh edges";
+    if (x.segmentsAreEdges) {
+        EXPECT_EQ(notEdges, 0) << "polyline segments that are not single selected mesh edges";
+    }
 }
 
 }  // namespace split
