@@ -323,10 +323,19 @@ public:
         if (t < 0 || heInitial[h] || !IsTri(heFace[h]) || !IsTri(heFace[t])) return false;
         int a = Org(h), b = Dst(h), c = Org(hePrev[h]), d = Org(hePrev[t]);
         if (c == d || EdgeExists(c, d) || OppositeInQuad(c, d)) return false;
-        P3 n = (FaceNormal(heFace[h]) + FaceNormal(heFace[t]));
+        P3 n1 = FaceNormal(heFace[h]), n2 = FaceNormal(heFace[t]);
+        P3 n = n1 + n2;
         if (!(n.Norm() > 0)) return false;
-        // the new triangles (c a d) and (d b c) must be positive
-        auto positive = [&](int x, int y, int z) { return ((pos[y] - pos[x]) ^ (pos[z] - pos[x])) * n > 0; };
+        // across a ridge a flip would change the surface (cut or fill the ridge): refuse beyond 25 deg
+        if ((n1 * n2) < std::cos(25 * M_PI / 180) * n1.Norm() * n2.Norm()) return false;
+        // the new triangles (c a d) and (d b c) must be positive, and not slivers that would be
+        // degenerate once written in float (sine of the smallest angle above 1e-3)
+        n.Normalize();
+        auto positive = [&](int x, int y, int z) {
+            P3 u = pos[y] - pos[x], v = pos[z] - pos[x], w = pos[z] - pos[y];
+            double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
+            return (u ^ v) * n > 1e-3 * l2;
+        };
         return positive(c, a, d) && positive(d, b, c);
     }
 

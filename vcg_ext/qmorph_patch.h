@@ -53,10 +53,16 @@ public:
     {
         home.resize(m.VertexCount(), 0);
         vertexCap = 4 * m.VertexCount() + 64;
+        double sum = 0;
+        int n = 0;
+        for (int h = 0; h < m.HalfEdgeCount(); ++h)
+            if (m.HeAlive(h)) { sum += m.Length(h); ++n; }
+        minLength = n ? 0.02 * sum / n : 0;
     }
 
     PatchStats Run()
     {
+        ImproveTriangulation();
         int triangles = 0;
         for (int f = 0; f < m.FaceCount(); ++f) triangles += m.FaceAlive(f) && m.IsTri(f);
         const long cap = 40L * triangles + 1000;
@@ -108,6 +114,39 @@ private:
     int successes = 0;
 
     int vertexCap;
+    double minLength = 0;  // no split makes edges shorter than this (2% of the mean input edge)
+
+    // Intrinsic Delaunay flips of the near-flat interior edges next to thin triangles, before the
+    // front starts: slivers (from splitting) make poor side edges. Well-shaped triangulations
+    // (grids, isotropic meshes) are left alone: their structure pairs into good quads. Only edges
+    // whose two triangles are within 15 degrees of coplanar are flipped: the surface barely changes.
+    void ImproveTriangulation()
+    {
+        const double maxDihedral = std::cos(15 * M_PI / 180);
+        for (int pass = 0; pass < 8; ++pass) {
+            int flips = 0;
+            for (int h = 0; h < m.HalfEdgeCount(); ++h) {
+                int t = m.heTwin[h];
+                if (t < h || !m.HeAlive(h) || !m.IsTri(m.heFace[h]) || !m.IsTri(m.heFace[t])) continue;
+                double opposite = m.CornerAngle(m.hePrev[h]) + m.CornerAngle(m.hePrev[t]);
+                if (opposite <= M_PI + 0.1) continue;
+                if (std::min(MinCorner(m.heFace[h]), MinCorner(m.heFace[t])) > 15 * M_PI / 180) continue;
+                P3 n1 = m.FaceNormal(m.heFace[h]), n2 = m.FaceNormal(m.heFace[t]);
+                double l = n1.Norm() * n2.Norm();
+                if (!(l > 0) || (n1 * n2) / l < maxDihedral || !m.CanFlip(h)) continue;
+                m.Flip(h);
+                ++flips;
+            }
+            stats.swaps += flips;
+            if (!flips) break;
+        }
+    }
+
+    double MinCorner(int f) const
+    {
+        int g = m.faceHe[f];
+        return std::min({m.CornerAngle(g), m.CornerAngle(m.heNext[g]), m.CornerAngle(m.hePrev[g])});
+    }
 
     // ---- queue ----------------------------------------------------------------------------------
     void PushAllFront()
@@ -136,6 +175,13 @@ private:
     {
         if (!m.DistinctNodes({a, b, c, d})) return -1;
         const int v[4] = {a, b, c, d};
+        double shortest = 1e300, longest = 0;  // a needle (aspect above 50) is as bad as a fold
+        for (int k = 0; k < 4; ++k) {
+            double l = (m.pos[v[(k + 1) % 4]] - m.pos[v[k]]).Norm();
+            shortest = std::min(shortest, l);
+            longest = std::max(longest, l);
+        }
+        if (!(shortest > 0.02 * longest)) return -1;
         P3 N(0, 0, 0);
         for (int k = 0; k < 4; ++k) N += m.pos[v[k]] ^ m.pos[v[(k + 1) % 4]];
         double l = N.Norm();
@@ -151,7 +197,10 @@ private:
     }
     bool TriPositive(int a, int b, int c, const P3 &n) const
     {
-        return m.DistinctNodes({a, b, c}) && ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
+        P3 u = m.pos[b] - m.pos[a], v = m.pos[c] - m.pos[a], w = m.pos[c] - m.pos[b];
+        double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
+        double nl = n.Norm();
+        return m.DistinctNodes({a, b, c}) && nl > 0 && (u ^ v) * n > 1e-3 * l2 * nl && ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
     }
 
     int NewVertexOnEdge(int h, const P3 &point)
@@ -168,7 +217,8 @@ private:
     bool Splittable(int h) const
     {
         int t = m.heTwin[h];
-        return t >= 0 && !m.heInitial[h] && m.IsTri(m.heFace[h]) && m.IsTri(m.heFace[t]) && m.VertexCount() < vertexCap;
+        return t >= 0 && !m.heInitial[h] && m.IsTri(m.heFace[h]) && m.IsTri(m.heFace[t]) && m.VertexCount() < vertexCap &&
+               m.Length(h) > 5 * minLength;
     }
 
     // ---- side edges -----------------------------------------------------------------------------
@@ -193,7 +243,7 @@ private:
             const double ideal = std::min(fan.Total() / 2, M_PI / 2);
             int best = -1;
             for (int i = 1; i + 1 < int(fan.edges.size()); ++i) {
-                if (fan.edges[i].vertex == exclude) continue;
+                if (fan.edges[i].vertex == exclude || ClosesOddLoop(h, leftEnd, fan.edges[i].vertex)) continue;
                 if (best < 0 || std::fabs(fan.edges[i].angle - ideal) < std::fabs(fan.edges[best].angle - ideal)) best = i;
             }
             if (best >= 0 && std::fabs(fan.edges[best].angle - ideal) < p.sideTolerance) {
@@ -223,11 +273,25 @@ private:
         // long side: split it to the base length
         const int node = leftEnd ? m.Org(h) : m.Dst(h);
         int hs = m.FindHalfEdge(node, tip);
-        if (hs >= 0 && m.Length(hs) > p.longSideFactor * base && !isKept(hs) && Splittable(hs)) {
+        if (hs >= 0 && m.Length(hs) > p.longSideFactor * base && base > minLength && !isKept(hs) && Splittable(hs)) {
             P3 point = m.pos[node] + (m.pos[tip] - m.pos[node]) * (base / m.Length(hs));
             tip = NewVertexOnEdge(hs, point);
         }
         return tip;
+    }
+
+    // A side from an end of h to a node a few front edges away along the loop (walking away from
+    // h) cuts that stretch off as a loop of its own: with an odd number of edges it would end as a
+    // triangle. Such tips are avoided (Q-Morph keeps loops even wherever it can).
+    bool ClosesOddLoop(int h, bool leftEnd, int tip) const
+    {
+        int e = h;
+        for (int d = 1; d <= 7; ++d) {
+            e = leftEnd ? front.PrevFront(e) : front.NextFront(e);
+            if (e < 0 || e == h) return false;
+            if ((leftEnd ? m.Org(e) : m.Dst(e)) == tip) return (d + 1) % 2 == 1;
+        }
+        return false;
     }
 
     // Where the direction at `delta` from node->x, turning towards node->y inside the triangle
@@ -319,7 +383,7 @@ private:
         if (QuadQuality(a, b, c, d, n) <= p.minQuadJacobian) return false;
         std::vector<int> faces, inner;
         if (!m.EnclosedTriangles(loop, faces, inner)) return false;
-        if (!m.QuadHasFreeDiagonal(a, b, c, d, faces)) return false;
+        if (!m.QuadHasFreeDiagonal(a, b, c, d, faces) || !InnerNodesNearQuad(inner, {a, b, c, d})) return false;
         int q = m.MakeQuad(loop, faces, inner, front.Level(h) + 1);
         ++stats.quadsFormed;
         AfterNewFaces({q}, {c, d});
@@ -359,6 +423,28 @@ private:
         return all;
     }
 
+    // Removing inner nodes must not flatten the surface: each must lie within a fifth of the
+    // shortest side from the plane of the new polygon (least-squares normal of its corners).
+    bool InnerNodesNearQuad(const std::vector<int> &inner, const std::vector<int> &corners) const
+    {
+        if (inner.empty()) return true;
+        P3 c(0, 0, 0), n(0, 0, 0);
+        for (int v : corners) c += m.pos[v];
+        c /= double(corners.size());
+        double shortest = 1e300;
+        for (size_t k = 0; k < corners.size(); ++k) {
+            const P3 &a = m.pos[corners[k]], &b = m.pos[corners[(k + 1) % corners.size()]];
+            n += a ^ b;
+            shortest = std::min(shortest, (b - a).Norm());
+        }
+        double l = n.Norm();
+        if (!(l > 0)) return false;
+        n /= l;
+        for (int v : inner)
+            if (std::fabs((m.pos[v] - c) * n) > 0.2 * shortest) return false;
+        return true;
+    }
+
     // ---- small loops ----------------------------------------------------------------------------
     bool CloseSmallLoop(int h, int len)
     {
@@ -372,6 +458,11 @@ private:
         std::vector<int> faces, inner;
         if (!RegionInside(loop, faces, inner)) return false;
         if (inner.size() > 2) return false;  // a large region behind a short loop: advance into it instead
+        {
+            std::vector<int> corners;
+            for (int e : loop) corners.push_back(m.Org(e));
+            if (!InnerNodesNearQuad(inner, corners)) return false;
+        }
         P3 n(0, 0, 0);
         for (int f : faces) n += m.FaceNormal(f);
         std::vector<int> v;
@@ -553,11 +644,11 @@ private:
         start.parent = -1;
         moves.assign(1, start);
         std::vector<int> usedFaces{tri};
-        for (size_t head = 0; head < moves.size() && moves.size() < 30000; ++head) {
+        for (size_t head = 0; head < moves.size() && moves.size() < 100000; ++head) {
             const Move t = moves[head];
             int depth = 0;
             for (int s = int(head); s >= 0; s = moves[s].parent) ++depth;
-            if (depth > 24) continue;
+            if (depth > 96) continue;  // a triangle on a straight front travels along the first row to a corner
             for (int k = 0; k < 3; ++k) {
                 if (t.e[k] < 0 || m.heTwin[t.e[k]] < 0) continue;
                 int face = m.heFace[m.heTwin[t.e[k]]];
@@ -702,7 +793,7 @@ private:
         m.pos[v] = to;
         double after = 1e9;
         for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, FaceQualityAt(faces[i], normals[i]));
-        if (after > 0 && after >= std::min(before, 0.2)) return true;
+        if (after > 1e-3 && after >= std::min(before, 0.2)) return true;
         m.pos[v] = old;
         return false;
     }

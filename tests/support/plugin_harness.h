@@ -114,7 +114,7 @@ public:
     RichParameterList Defaults(const QString &filterName)
     {
         RichParameterList par;
-        plugin.initParameterSet(Action(filterName), *doc.mm(), par);
+        plugin.initParameterSet(Action(filterName), doc, par);
         return par;
     }
 

@@ -1,48 +1,280 @@
+// Q-Morph on generated and real meshes: counts, topology, preserved front, orientation, volume
+// and Hausdorff distance, each computed independently of the algorithm.
 #include <gtest/gtest.h>
 
-#include <set>
+#include <limits>
+#include <sstream>
 
+#include "planar_domains.h"
+#include "quad_checks.h"
 #include "test_mesh.h"
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph.h>
+#include <vcg_ext/vsa_segmentation.h>
 
 using namespace qmf_test;
 typedef vcg_ext::QMorph<TMesh> QM;
 
 namespace {
 
-// Selects (both sides) the mesh edges whose two faces differ in normal by more than `deg`.
-void SelectCreases(TMesh &m, double deg)
-{
-    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
-    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
-    for (auto &f : m.face)
-        for (int k = 0; k < 3; ++k) {
-            TFace *g = f.FFp(k);
-            if (g != &f && vcg::Angle(f.N(), g->N()) > deg * M_PI / 180) f.SetFaceEdgeS(k);
-        }
-}
-
 std::string Describe(const QM::Result &r)
 {
     std::ostringstream s;
-    s << "quads " << r.quads << " tris " << r.triangles << " patches " << r.patches << " formed " << r.ops.quadsFormed
-      << " templates " << r.ops.templates << " paired " << r.ops.pairedTriangles << " failures " << r.ops.failures
-      << " splits " << r.ops.splits << " swaps " << r.ops.swaps << " minJ " << r.quality.minJacobian << " meanJ "
-      << r.quality.meanJacobian << " irregular " << r.quality.irregularVertices << "/" << r.quality.interiorAllQuadVertices;
+    s << "quads " << r.quads << ", triangles " << r.triangles << ", patches " << r.patches << ", min SJ "
+      << r.quality.minJacobian << ", mean SJ " << r.quality.meanJacobian << ", irregular " << r.quality.irregularVertices
+      << "/" << r.quality.interiorAllQuadVertices;
     return s.str();
+}
+
+int Euler(const TMesh &m)
+{
+    auto c = vcg_ext::MeshChecks<TMesh>::Inspect(m);
+    return c.vertices - int(AllEdges(m).size()) + c.faces;
+}
+
+// Runs Q-Morph on `m` and checks what must hold for any input: no error, no inverted quad, a
+// clean 2-manifold (closed when the input was), the front unchanged and still the only
+// selection, the Euler characteristic kept. Returns the result for case-specific checks.
+QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
+{
+    const auto in = vcg_ext::MeshChecks<TMesh>::Inspect(m);
+    const std::set<PosEdge> selected = SelectedEdges(m);
+    std::set<PosEdge> front = selected;
+    {  // boundary edges are initial front too
+        std::map<PosEdge, int> uses;
+        for (auto &f : m.face)
+            for (int k = 0; k < 3; ++k) uses[MakePosEdge(f.cP(k), f.cP((k + 1) % 3))]++;
+        for (auto &u : uses)
+            if (u.second == 1) front.insert(u.first);
+    }
+    const int euler = Euler(m);
+    QM::Result r = QM::Apply(m, p);
+    EXPECT_EQ(r.error, "");
+    if (!r.error.empty()) return r;
+    const auto out = vcg_ext::MeshChecks<TMesh>::Inspect(m);
+    EXPECT_EQ(out.nonManifoldEdges, 0);
+    EXPECT_EQ(out.nonManifoldVertices, 0);
+    EXPECT_EQ(out.degenerateFaces, 0);
+    EXPECT_EQ(out.duplicateFaces, 0);
+    EXPECT_TRUE(out.IsOriented());
+    EXPECT_EQ(out.IsClosed(), in.IsClosed());
+    EXPECT_EQ(out.components, in.components);
+    EXPECT_EQ(r.quality.invertedQuads, 0) << Describe(r);
+    if (r.quads) EXPECT_GT(r.quality.minJacobian, 0.0) << Describe(r);
+    EXPECT_EQ(SelectedEdges(m), selected) << "the selection must be exactly the initial front";
+    const std::set<PosEdge> edges = AllEdges(m);
+    int lost = 0;
+    for (const PosEdge &e : front) lost += edges.count(e) == 0;
+    EXPECT_EQ(lost, 0) << "initial front edges that are no longer edges";
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
+    EXPECT_EQ(EulerCharacteristic(pm), euler) << "the polygon mesh changed topology";
+    EXPECT_EQ(r.quads + r.triangles, int(pm.faces.size()));
+    return r;
+}
+
+void ExpectAllFacesFacingUp(const TMesh &m)
+{
+    for (auto &f : m.face) {
+        P3 n = (f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0));
+        ASSERT_GT(n[2], 0.f) << "a face is flipped";
+    }
 }
 
 }  // namespace
 
-TEST(QMorph, PlanarSquareGridBecomesAllQuads)
+TEST(QMorph, RegularSquareGridBecomesARegularQuadGrid)
 {
     TMesh m;
-    MakeGrid(m, 10, 1.f, 0.f);
-    QM::Params p;
-    QM::Result r = QM::Apply(m, p);
-    ASSERT_EQ(r.error, "");
-    std::cout << Describe(r) << std::endl;
+    MakeGrid(m, 10, 1.f, 0.25f, 7);
+    QM::Result r = RunAndCheckInvariants(m);
     EXPECT_EQ(r.triangles, 0);
-    EXPECT_EQ(r.quality.invertedQuads, 0);
+    EXPECT_EQ(r.quads, 100);
+    EXPECT_EQ(r.quality.irregularVertices, 0) << "every interior vertex of a grid has valence 4";
+    EXPECT_GT(r.quality.meanJacobian, 0.95);
+    ExpectAllFacesFacingUp(m);
+}
+
+TEST(QMorph, PlanarDomainsAllQuadsWhenEvenOneTriangleWhenOdd)
+{
+    struct Case { const char *name; std::function<void(TMesh &)> make; };
+    const Case cases[] = {
+        {"disk 40", [](TMesh &m) { MakeDisk(m, 40, 2 * M_PI / 40, 3); }},
+        {"disk 41", [](TMesh &m) { MakeDisk(m, 41, 2 * M_PI / 41, 3); }},
+        {"disk 24", [](TMesh &m) { MakeDisk(m, 24, 2 * M_PI / 24, 3); }},
+        {"disk 25", [](TMesh &m) { MakeDisk(m, 25, 2 * M_PI / 25, 3); }},
+        {"annulus 36+18", [](TMesh &m) { MakeAnnulus(m, 36, 18, 2 * M_PI / 36, 3); }},
+        {"annulus 37+18", [](TMesh &m) { MakeAnnulus(m, 37, 18, 2 * M_PI / 37, 3); }},
+        {"L-shape 64", [](TMesh &m) { MakeLShape(m, 8, 1.0 / 8, 0, 5); }},
+        {"L-shape 65", [](TMesh &m) { MakeLShape(m, 8, 1.0 / 8, 1, 3); }},
+    };
+    for (const Case &c : cases) {
+        SCOPED_TRACE(c.name);
+        TMesh m;
+        c.make(m);
+        const int boundary = vcg_ext::MeshChecks<TMesh>::Inspect(m).boundaryEdges;
+        QM::Result r = RunAndCheckInvariants(m);
+        EXPECT_EQ(r.patches, 1);
+        EXPECT_EQ(r.triangles, boundary % 2) << Describe(r) << " (boundary " << boundary << ")";
+        EXPECT_GT(r.quality.meanJacobian, 0.8) << Describe(r);
+        ExpectAllFacesFacingUp(m);
+    }
+}
+
+TEST(QMorph, CubeWithItsTwelveEdgesSelectedGivesSixQuadPatches)
+{
+    TMesh m;
+    MakeCube(m, 6, 0.3f, 11);
+    ASSERT_EQ(SelectCreases(m, 45), 12 * 6);
+    const double volume = Volume(m);
+    QM::Result r = RunAndCheckInvariants(m);
+    EXPECT_EQ(r.patches, 6);
+    EXPECT_EQ(r.triangles, 0);
+    EXPECT_EQ(r.quads, 6 * 36);
+    EXPECT_NEAR(Volume(m), volume, 1e-4 * volume) << "flat sides, fixed edges: the volume is exact";
+    // the 8 corners are the only irregular vertices (valence 3)
+    EXPECT_EQ(r.quality.irregularVertices, 8);
+}
+
+TEST(QMorph, PatchesWithoutInteriorStayTrianglesOrBecomeSingleQuads)
+{
+    TMesh cube;  // 2 triangles per side, all 12 edges selected: each side is one quad
+    MakeCube(cube, 1);
+    SelectCreases(cube, 45);
+    QM::Result r = RunAndCheckInvariants(cube);
+    EXPECT_EQ(r.patches, 6);
+    EXPECT_EQ(r.quads, 6);
+    EXPECT_EQ(r.triangles, 0);
+
+    TMesh octa;  // every edge selected: 8 single-triangle patches, left as they are
+    vcg::tri::Octahedron(octa);
+    vcg::tri::UpdateBounding<TMesh>::Box(octa);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(octa);
+    for (auto &f : octa.face)
+        for (int k = 0; k < 3; ++k) f.SetFaceEdgeS(k);
+    r = RunAndCheckInvariants(octa);
+    EXPECT_EQ(r.patches, 8);
+    EXPECT_EQ(r.triangles, 8);
+    EXPECT_EQ(r.quads, 0);
+}
+
+TEST(QMorph, DanglingChainIsASlitTheFrontWalksAround)
+{
+    TMesh m;
+    MakeGrid(m, 12, 1.f, 0.f);
+    // select a chain of 6 edges going from the bottom boundary straight up (x = 0.5) into the middle
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    int chain = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            P3 a = f.P(k), b = f.P((k + 1) % 3);
+            if (std::fabs(a[0] - 0.5f) < 1e-6f && std::fabs(b[0] - 0.5f) < 1e-6f && std::max(a[1], b[1]) <= 0.5f + 1e-6f) {
+                f.SetFaceEdgeS(k);
+                ++chain;
+            }
+        }
+    ASSERT_EQ(chain, 2 * 6) << "6 edges, selected on both of their faces";
+    QM::Result r = RunAndCheckInvariants(m);
+    EXPECT_EQ(r.patches, 1);
+    EXPECT_LE(r.triangles, 1);
+    ExpectAllFacesFacingUp(m);
+}
+
+TEST(QMorph, CurvedCylinderDoesNotShrink)
+{
+    TMesh m;
+    MakeCylinder(m, 48, 10, 1.f, 2.5f, 4);  // fine enough that re-sampling the facets costs < 0.5%
+    SelectCreases(m, 45);  // the two cap rims
+    const double volume = Volume(m);
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    QM::Result r = RunAndCheckInvariants(m);
+    EXPECT_EQ(r.patches, 3);
+    EXPECT_LT(std::fabs(Volume(m) - volume) / volume, 0.005) << "smoothing in the tangent plane keeps the volume";
+    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+    EXPECT_LE(r.triangles, 3);
+}
+
+TEST(QMorph, SphereCutByRegionBoundariesDoesNotShrink)
+{
+    TMesh m;
+    MakeSphere(m, 4);
+    vcg_ext::VSASegmentation<TMesh>::Params vp;
+    vp.mode = vcg_ext::VSASegmentation<TMesh>::FixedRegionCount;
+    vp.maxRegions = 6;
+    ASSERT_EQ(vcg_ext::VSASegmentation<TMesh>::Segment(m, vp).regions, 6);
+    SelectRegionBoundaries(m);  // jaggy fronts made of mesh edges
+    const double volume = Volume(m);
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    QM::Result r = RunAndCheckInvariants(m);
+    EXPECT_EQ(r.patches, 6);
+    EXPECT_LT(std::fabs(Volume(m) - volume) / volume, 0.005);
+    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+    EXPECT_GT(double(r.quads) / (r.quads + r.triangles), 0.9) << Describe(r);
+}
+
+TEST(QMorph, FandiskWithCreaseFront)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/fandisk.off"));
+    ASSERT_GT(SelectCreases(m, 40), 100);
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    QM::Result r = RunAndCheckInvariants(m);
+    EXPECT_GT(r.quality.quadAreaFraction, 0.98) << Describe(r);
+    EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
+    EXPECT_LT(r.quality.IrregularFraction(), 0.2) << Describe(r);
+    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+}
+
+TEST(QMorph, ElephantWithJaggyRegionFronts)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/elephant.off"));
+    vcg_ext::VSASegmentation<TMesh>::Params vp;
+    vcg_ext::VSASegmentation<TMesh>::Segment(m, vp);
+    SelectRegionBoundaries(m);
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    QM::Result r = RunAndCheckInvariants(m);
+    EXPECT_GT(r.quality.quadAreaFraction, 0.95) << Describe(r);
+    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag()) << "removed inner nodes must not flatten features";
+}
+
+TEST(QMorph, BadInputIsRefusedAndLeftUnchanged)
+{
+    auto unchanged = [](TMesh &m, const std::string &expected, const QM::Params &p = QM::Params()) {
+        std::vector<P3> before;
+        for (auto &v : m.vert) before.push_back(v.P());
+        std::vector<int> flags;
+        for (auto &f : m.face) flags.push_back(f.Flags());
+        size_t faces = m.face.size();
+        QM::Result r = QM::Apply(m, p);
+        EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
+        EXPECT_EQ(m.face.size(), faces);
+        for (size_t i = 0; i < before.size(); ++i)
+            EXPECT_TRUE(std::memcmp(&before[i], &m.vert[i].P(), sizeof(P3)) == 0);
+        for (size_t i = 0; i < flags.size(); ++i) EXPECT_EQ(flags[i], m.face[i].Flags());
+    };
+    TMesh closed;
+    MakeCube(closed, 3);
+    unchanged(closed, "no selected edges");
+    TMesh fin;
+    Build(fin, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0), P3(0, -1, 0), P3(0, 0, 1)}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    unchanged(fin, "not 2-manifold");
+    TMesh degenerate;
+    Build(degenerate, {P3(0, 0, 0), P3(1, 0, 0), P3(2, 0, 0), P3(0, 1, 0)}, {{0, 1, 2}, {0, 1, 3}});
+    unchanged(degenerate, "degenerate");
+    TMesh nan;
+    MakeGrid(nan, 3);
+    nan.vert[5].P()[0] = std::numeric_limits<float>::quiet_NaN();
+    unchanged(nan, "NaN");
+    TMesh ok;
+    MakeGrid(ok, 3);
+    QM::Params p;
+    p.smoothingIterations = -1;
+    unchanged(ok, "smoothing iterations", p);
+    TMesh empty;
+    unchanged(empty, "empty");
 }
