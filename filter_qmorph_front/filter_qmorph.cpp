@@ -3,7 +3,7 @@
 
 #include <QFileInfo>
 
-#include <vcg_ext/front_edges.h>
+#include "front_edges_layer.h"
 #include <vcg_ext/polygon_export.h>
 #include <vcg_ext/qmorph.h>
 #include <vcg_ext/region_ids.h>
@@ -35,6 +35,10 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &, RichParameterList &
                           "(no shrinkage). Initial-front nodes never move."));
     par.addParam(RichInt("SmoothingIterations", d.smoothingIterations, "Final smoothing iterations",
                          "Number of tangent-plane smoothing sweeps over the quad mesh at the end (0..100)."));
+    par.addParam(RichFloat("CreaseAngle", float(d.creaseAngleDeg), "Crease angle (deg)",
+                           "Edges whose two faces' normals differ by more than this angle are cut like front edges "
+                           "(they are not selected), so no quad folds over a sharp crease inside a patch (a VSA region "
+                           "may hold creases up to twice its threshold angle). 180 turns it off. In (0, 180]."));
     par.addParam(RichBool("FrontEdgesLayer", true, "Front edges layer",
                           "Refresh (or create) the edge-only layer '<mesh>_front_edges' showing the selected front "
                           "edges: MeshLab 2020.09 does not draw selected face-edges."));
@@ -50,6 +54,7 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     QMorphCMeshO::Params p;
     p.smoothing = par.getBool("TangentSmoothing");
     p.smoothingIterations = par.getInt("SmoothingIterations");
+    p.creaseAngleDeg = par.getFloat("CreaseAngle");
     const QString exportPath = par.getSaveFileName("ExportPath").trimmed();
     std::string bad = p.Validate();
     if (!bad.empty()) return fail(name, QString::fromStdString(bad));
@@ -74,32 +79,20 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     }
     mm.UpdateBoxAndNormals();
 
+    QString layerNote;
     if (par.getBool("FrontEdgesLayer")) {
-        const QString label = mm.label() + "_front_edges";
-        MeshModel *layer = nullptr;
-        for (MeshModel *other : md.meshList)
-            if (other != &mm && other->label() == label) layer = other;
-        if (layer == nullptr) layer = md.addNewMesh("", label, false);
-        const auto edges = vcg_ext::FrontEdges<CMeshO>::Collect(mm.cm);
-        CMeshO &out = layer->cm;
-        out.Clear();
-        std::vector<int> index(mm.cm.vert.size(), -1);
-        for (const auto &e : edges)
-            for (int v : {e.first, e.second})
-                if (index[v] < 0) {
-                    index[v] = out.vn;
-                    vcg::tri::Allocator<CMeshO>::AddVertex(out, mm.cm.vert[v].cP());
-                }
-        for (const auto &e : edges) vcg::tri::Allocator<CMeshO>::AddEdge(out, &out.vert[index[e.first]], &out.vert[index[e.second]]);
-        layer->UpdateBoxAndNormals();
+        bool existed = false;
+        MeshModel *layer = RefreshFrontEdgesLayer(md, mm, vcg_ext::FrontEdges<CMeshO>::Collect(mm.cm), existed);
+        layerNote = QString("; %1 layer '%2' (%3 edges)").arg(existed ? "refreshed" : "new", layer->label()).arg(layer->cm.en);
     }
 
     const vcg_ext::QuadQualityReport &q = r.quality;
-    Log("Q-Morph: %d patches (%d without front), %d initial front edges; %d quads, %d triangles left "
+    Log("Q-Morph: %d patches (%d without front), %d initial front edges (%d of them unselected sharp creases); %d quads, %d triangles left "
         "(%.1f%% of the area in quads); %d quads formed, %d by templates, %d triangle pairs merged, %d doublets "
-        "removed; %d swaps, %d splits; %.3f s",
-        r.patches, r.patchesWithoutFront, r.initialFrontEdges, r.quads, r.triangles, 100 * q.quadAreaFraction,
-        r.ops.quadsFormed, r.ops.templates, r.ops.pairedTriangles, r.ops.doublets, r.ops.swaps, r.ops.splits, r.seconds);
+        "removed; %d swaps, %d splits; %.3f s%s",
+        r.patches, r.patchesWithoutFront, r.initialFrontEdges, r.creaseEdges, r.quads, r.triangles, 100 * q.quadAreaFraction,
+        r.ops.quadsFormed, r.ops.templates, r.ops.pairedTriangles, r.ops.doublets, r.ops.swaps, r.ops.splits, r.seconds,
+        qUtf8Printable(layerNote));
     Log("Q-Morph quality: scaled Jacobian min %.3f mean %.3f, %d quads below 0.3, %d inverted; irregular vertices "
         "%d of %d (%.1f%%)",
         q.minJacobian, q.meanJacobian, q.quadsBelow03, q.invertedQuads, q.irregularVertices, q.interiorAllQuadVertices,

@@ -1,7 +1,7 @@
 // Filter 3: Split Triangles along Front.
 #include "filter_qmorph_front.h"
 
-#include <vcg_ext/front_edges.h>
+#include "front_edges_layer.h"
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/polyline_embedding.h>
 
@@ -101,14 +101,9 @@ bool QMorphFrontPlugin::applySplit(MeshDocument &md, const RichParameterList &pa
 
     QString layerNote;
     if (par.getBool("FrontEdgesLayer")) {
-        const QString label = mm.label() + "_front_edges";
-        MeshModel *layer = nullptr;
-        for (MeshModel *other : md.meshList)
-            if (other != &mm && other->label() == label) layer = other;
-        const bool existed = layer != nullptr;
-        if (layer == nullptr) layer = md.addNewMesh("", label, false);
-        vcg_ext::FrontEdges<CMeshO>::BuildEdgeMesh(mm.cm, plan.frontEdges, layer->cm);
-        layer->UpdateBoxAndNormals();
+        bool existed = false;
+        MeshModel *layer = RefreshFrontEdgesLayer(md, mm, plan.frontEdges, existed);
+        const QString label = layer->label();
         layerNote = QString("; %1 layer '%2' (%3 edges)").arg(existed ? "refreshed" : "new", label).arg(layer->cm.en);
     }
     if (cb) cb(100, "Split Triangles along Front: done");

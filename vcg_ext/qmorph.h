@@ -45,10 +45,13 @@ public:
         bool smoothing = true;             // tangent-plane smoothing (local, and final sweeps)
         int smoothingIterations = 5;       // final smoothing sweeps, 0..100
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
+        double creaseAngleDeg = 60;        // edges this sharp (angle between face normals) are front
+                                           // too, so no quad folds over a crease; >= 180: off
 
         std::string Validate() const
         {
             if (smoothingIterations < 0 || smoothingIterations > 100) return "smoothing iterations must be in 0..100";
+            if (!(creaseAngleDeg > 0 && creaseAngleDeg <= 180)) return "the crease angle must be in (0, 180] degrees";
             if (!(closedAngleDeg > 30 && closedAngleDeg < 180)) return "the closed-end angle must be in (30, 180) degrees";
             return "";
         }
@@ -57,6 +60,7 @@ public:
     struct Result {
         std::string error;
         int initialFrontEdges = 0, patches = 0, patchesWithoutFront = 0;
+        int creaseEdges = 0;  // sharp edges that were not selected but cut the patches too
         int quads = 0, triangles = 0;
         qmorph::PatchStats ops;
         QuadQualityReport quality;
@@ -116,6 +120,23 @@ private:
 
     QMorph(MeshType &mesh, const Params &p, vcg::CallBackPos *callback) : m(mesh), par(p), cb(callback) {}
 
+    int creaseCount = 0;
+
+    // Sharp edges inside a patch (VSA regions may hold creases up to twice the threshold angle)
+    // are cut like front edges: quads then follow them instead of folding over them.
+    bool IsCrease(int f, int g)
+    {
+        if (par.creaseAngleDeg >= 180) return false;
+        auto normal = [&](int t) {
+            P3 a = P3::Construct(m.vert[tri[t][0]].cP()), b = P3::Construct(m.vert[tri[t][1]].cP()),
+               c = P3::Construct(m.vert[tri[t][2]].cP());
+            return ((b - a) ^ (c - a)).Normalize();
+        };
+        bool sharp = normal(f) * normal(g) < std::cos(par.creaseAngleDeg * M_PI / 180);
+        creaseCount += sharp;
+        return sharp;
+    }
+
     static uint64_t Key(int a, int b)
     {
         return (uint64_t(uint32_t(std::min(a, b))) << 32) | uint32_t(std::max(a, b));
@@ -165,12 +186,14 @@ private:
                 twinCorner[edges[i].he] = edges[i + 1].he;
                 twinCorner[edges[i + 1].he] = edges[i].he;
             }
-            if (selected || j - i != 2) {
+            const bool crease = !selected && j - i == 2 && IsCrease(edges[i].he / 3, edges[i + 1].he / 3);
+            if (selected || crease || j - i != 2) {
                 for (size_t k = i; k < j; ++k) cut[edges[k].he] = 1;
                 ++res.initialFrontEdges;
             }
             i = j;
         }
+        res.creaseEdges = creaseCount;
         std::vector<int> faceSet(F), cornerSet(3 * F);
         std::iota(faceSet.begin(), faceSet.end(), 0);
         std::iota(cornerSet.begin(), cornerSet.end(), 0);

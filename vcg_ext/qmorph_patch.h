@@ -735,7 +735,8 @@ private:
         int h1 = out[0], h2 = out[1];
         int a = m.Dst(h1), b = m.Dst(m.heNext[h1]), c = m.Dst(h2), d = m.Dst(m.heNext[h2]);
         P3 n = m.FaceNormal(m.heFace[h1]) + m.FaceNormal(m.heFace[h2]);
-        return QuadQuality(a, b, c, d, n) > p.minQuadJacobian && m.QuadHasFreeDiagonal(a, b, c, d, {m.heFace[h1], m.heFace[h2]});
+        return QuadQuality(a, b, c, d, n) > p.minQuadJacobian && m.QuadHasFreeDiagonal(a, b, c, d, {m.heFace[h1], m.heFace[h2]}) &&
+               InnerNodesNearQuad({v}, {a, b, c, d});
     }
 
     // ---- smoothing ------------------------------------------------------------------------------

@@ -1,0 +1,223 @@
+// Filter 4 in-process: MeshLab's polygonal output (faux diagonals), selection kept, front-edges
+// layer, quad export read back independently, bad input leaves the document untouched; and the
+// four filters chained on fandisk.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+#include "plugin_harness.h"
+#include "test_mesh.h"
+#include <vcg_ext/mesh_checks.h>
+
+using namespace qmf_test;
+
+namespace {
+const QString kQMorph = "Q-Morph Quad Conversion";
+
+MeshModel *AddTMesh(PluginHarness &h, const TMesh &t)
+{
+    std::vector<vcg::Point3f> v;
+    std::vector<std::array<int, 3>> f;
+    for (auto &x : t.vert) v.push_back(x.cP());
+    for (auto &x : t.face)
+        f.push_back({int(vcg::tri::Index(t, x.cV(0))), int(vcg::tri::Index(t, x.cV(1))), int(vcg::tri::Index(t, x.cV(2)))});
+    return h.AddMesh(v, f);
+}
+
+// A cube with its 12 edges selected on both faces (4 cells per side edge).
+MeshModel *AddSelectedCube(PluginHarness &h)
+{
+    TMesh t;
+    MakeCube(t, 4, 0.3f, 2);
+    MeshModel *mm = AddTMesh(h, t);
+    mm->updateDataMask(MeshModel::MM_FACEFACETOPO);
+    vcg::tri::UpdateTopology<CMeshO>::FaceFace(mm->cm);
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm->cm);
+    for (auto &f : mm->cm.face)
+        for (int k = 0; k < 3; ++k)
+            if (vcg::Angle(f.N(), f.FFp(k)->N()) > M_PI / 4) f.SetFaceEdgeS(k);
+    return mm;
+}
+
+int CountFaceEdges(const CMeshO &m, bool (CFaceO::*test)(int) const)
+{
+    int n = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) n += (f.*test)(k) ? 1 : 0;
+    return n;
+}
+
+void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::string &expected)
+{
+    MeshSnapshot before = MeshSnapshot::Of(*h.doc.mm());
+    int layers = h.doc.size();
+    FilterRun r = h.Apply(kQMorph, par);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
+    EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log";
+    EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
+    EXPECT_EQ(h.doc.size(), layers);
+}
+
+// Faces of an OBJ file (an independent reader: "f a b c ..." lines, 1-based, maybe a/b/c).
+std::vector<std::vector<int>> ObjFaces(const std::string &path, int &vertices)
+{
+    std::ifstream in(path);
+    std::string line;
+    std::vector<std::vector<int>> faces;
+    vertices = 0;
+    while (std::getline(in, line)) {
+        std::istringstream s(line);
+        std::string tag;
+        s >> tag;
+        if (tag == "v") ++vertices;
+        if (tag != "f") continue;
+        std::vector<int> f;
+        std::string tok;
+        while (s >> tok) f.push_back(std::stoi(tok.substr(0, tok.find('/'))) - 1);
+        faces.push_back(f);
+    }
+    return faces;
+}
+}  // namespace
+
+TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
+{
+    PluginHarness h;
+    MeshModel *mm = AddSelectedCube(h);
+    const int selected = CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS);
+    ASSERT_EQ(selected, 2 * 12 * 4);
+    RichParameterList par = h.Defaults(kQMorph);
+    const std::string exportPath = std::string(QMF_TEST_WORK_DIR) + "/qmorph_plugin_cube.obj";
+    std::remove(exportPath.c_str());
+    par.setValue("ExportPath", FileValue(QString::fromStdString(exportPath)));
+    FilterRun r = h.Apply(kQMorph, par);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.Logged("Q-Morph: 6 patches (0 without front), 48 initial front edges (0 of them unselected sharp creases); 96 quads, 0 triangles left"));
+    EXPECT_TRUE(r.Logged("0 inverted"));
+    EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_POLYGONAL));
+    EXPECT_EQ(mm->cm.fn, 2 * 96);
+    EXPECT_EQ(CountFaceEdges(mm->cm, &CFaceO::IsF), 2 * 96) << "every face has exactly one faux edge: its quad diagonal";
+    EXPECT_EQ(CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS), selected) << "the front stays the only selection";
+    for (auto &f : mm->cm.face)
+        for (int k = 0; k < 3; ++k) EXPECT_FALSE(f.IsF(k) && f.IsFaceEdgeS(k)) << "a front edge cannot be a diagonal";
+    // the refreshed front-edges layer holds the 48 front edges
+    MeshModel *layer = nullptr;
+    for (MeshModel *m : h.doc.meshList)
+        if (m->label() == mm->label() + "_front_edges") layer = m;
+    ASSERT_NE(layer, nullptr);
+    EXPECT_EQ(layer->cm.en, 48);
+    EXPECT_EQ(layer->cm.fn, 0);
+    EXPECT_EQ(h.doc.mm(), mm) << "the quad mesh stays the current layer";
+    // the export has real quads: 96 faces of 4 vertices, every edge used twice (closed)
+    int vertices = 0;
+    auto faces = ObjFaces(exportPath, vertices);
+    ASSERT_EQ(faces.size(), 96u);
+    std::map<std::pair<int, int>, int> uses;
+    for (auto &f : faces) {
+        ASSERT_EQ(f.size(), 4u);
+        for (size_t k = 0; k < 4; ++k) uses[{std::min(f[k], f[(k + 1) % 4]), std::max(f[k], f[(k + 1) % 4])}]++;
+    }
+    for (auto &u : uses) EXPECT_EQ(u.second, 2);
+    EXPECT_EQ(vertices - int(uses.size()) + int(faces.size()), 2) << "a closed genus-0 quad mesh";
+}
+
+TEST(QMorphPlugin, OpenMeshUsesItsBoundaryAsFront)
+{
+    PluginHarness h;
+    TMesh t;
+    MakeGrid(t, 6);
+    AddTMesh(h, t);
+    FilterRun r = h.Apply(kQMorph);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.Logged("36 quads, 0 triangles left"));
+    EXPECT_EQ(CountFaceEdges(h.doc.mm()->cm, &CFaceO::IsFaceEdgeS), 0) << "nothing was selected, nothing is";
+}
+
+TEST(QMorphPlugin, ClosedMeshWithoutSelectionIsRefused)
+{
+    PluginHarness h;
+    TMesh t;
+    MakeCube(t, 3);
+    AddTMesh(h, t);
+    ExpectRefused(h, h.Defaults(kQMorph), "Split Triangles along Front");
+}
+
+TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
+{
+    {
+        PluginHarness h;  // a fin: non-manifold edge
+        h.AddMesh({vcg::Point3f(0, 0, 0), vcg::Point3f(1, 0, 0), vcg::Point3f(0, 1, 0), vcg::Point3f(0, -1, 0),
+                   vcg::Point3f(0, 0, 1)},
+                  {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+        ExpectRefused(h, h.Defaults(kQMorph), "not 2-manifold");
+    }
+    {
+        PluginHarness h;  // a zero-area face
+        h.AddMesh({vcg::Point3f(0, 0, 0), vcg::Point3f(1, 0, 0), vcg::Point3f(2, 0, 0), vcg::Point3f(0, 1, 0)},
+                  {{0, 1, 2}, {0, 1, 3}});
+        ExpectRefused(h, h.Defaults(kQMorph), "degenerate");
+    }
+    {
+        PluginHarness h;
+        AddSelectedCube(h);
+        h.doc.mm()->cm.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
+        ExpectRefused(h, h.Defaults(kQMorph), "NaN");
+    }
+    for (int it : {-1, 101}) {
+        PluginHarness h;
+        AddSelectedCube(h);
+        RichParameterList par = h.Defaults(kQMorph);
+        par.setValue("SmoothingIterations", IntValue(it));
+        ExpectRefused(h, par, "smoothing iterations");
+    }
+    {
+        PluginHarness h;
+        AddSelectedCube(h);
+        RichParameterList par = h.Defaults(kQMorph);
+        par.setValue("ExportPath", FileValue("/tmp/quads.stl"));
+        ExpectRefused(h, par, ".obj, .off or .ply");
+        par.setValue("ExportPath", FileValue("/no/such/folder/quads.obj"));
+        ExpectRefused(h, par, "cannot write");
+    }
+    {
+        PluginHarness h;
+        h.AddMesh({}, {});
+        ExpectRefused(h, h.Defaults(kQMorph), "empty");
+    }
+}
+
+TEST(QMorphPlugin, WholePipelineOnFandisk)
+{
+    PluginHarness h;
+    ASSERT_NE(h.LoadOff(MeshDir() + "/fandisk.off"), nullptr);
+    MeshModel *mm = h.doc.mm();
+    const int eulerIn = mm->cm.vn - mm->cm.fn * 3 / 2 + mm->cm.fn;
+    for (const char *f : {"Segment by Variational Shape Approximation", "Smooth Region Boundaries",
+                          "Split Triangles along Front"}) {
+        FilterRun r = h.Apply(f);
+        ASSERT_TRUE(r.ok) << f << ": " << r.error;
+    }
+    h.doc.setCurrentMesh(mm->id());
+    const int selected = CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS);
+    FilterRun r = h.Apply(kQMorph);
+    ASSERT_TRUE(r.ok) << r.error;
+    std::smatch mq;
+    std::string all;
+    for (auto &l : r.log) all += l + "\n";
+    ASSERT_TRUE(std::regex_search(all, mq, std::regex("(\\d+) quads, (\\d+) triangles left \\(([0-9.]+)% of the area"))) << all;
+    const int quads = std::stoi(mq[1]), tris = std::stoi(mq[2]);
+    EXPECT_GT(double(quads) / (quads + tris), 0.95);
+    EXPECT_GE(std::stod(mq[3]), 95.0);
+    EXPECT_TRUE(r.Logged(" 0 inverted"));
+    EXPECT_EQ(CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS), selected);
+    auto checks = vcg_ext::MeshChecks<CMeshO>::Inspect(mm->cm);
+    EXPECT_TRUE(checks.IsClosed());
+    EXPECT_TRUE(checks.IsTwoManifold());
+    EXPECT_TRUE(checks.IsOriented());
+    EXPECT_EQ(checks.degenerateFaces, 0);
+    EXPECT_EQ(mm->cm.vn - mm->cm.fn * 3 / 2 + mm->cm.fn, eulerIn) << "genus kept";
+}
