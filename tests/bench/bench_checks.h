@@ -1,0 +1,239 @@
+// What the benchmark measures besides the core's own reports, computed independently of the
+// algorithms: memory (VmRSS / VmHWM), a sampled two-sided Hausdorff distance, Euler
+// characteristics, the front as position pairs, enclosed volume, mesh loading (PLY / OFF) and
+// midpoint refinement.
+#ifndef QMF_BENCH_CHECKS_H
+#define QMF_BENCH_CHECKS_H
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/complex/algorithms/refine.h>
+#include <vcg/space/index/grid_static_ptr.h>
+#include <wrap/io_trimesh/import_off.h>
+#include <wrap/io_trimesh/import_ply.h>
+
+#include "test_mesh.h"
+#include <vcg_ext/quad_quality.h>
+
+namespace qmf_bench {
+
+using qmf_test::TMesh;
+using qmf_test::TFace;
+typedef vcg::Point3f P3;
+
+// ---------------------------------------------------------------- memory (Linux /proc)
+// A "VmXXX:   1234 kB" field of /proc/self/status, in MiB (-1 when unreadable).
+inline double StatusMiB(const char *key)
+{
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    const size_t n = std::strlen(key);
+    while (std::getline(in, line))
+        if (line.compare(0, n, key) == 0 && line.size() > n && line[n] == ':') return std::atof(line.c_str() + n + 1) / 1024.0;
+    return -1;
+}
+inline double RssMiB() { return StatusMiB("VmRSS"); }
+inline double PeakMiB() { return StatusMiB("VmHWM"); }
+// Resets VmHWM to the current RSS (Linux >= 4.0: "5" into clear_refs). False when not allowed.
+inline bool ResetPeak()
+{
+    FILE *f = std::fopen("/proc/self/clear_refs", "w");
+    if (!f) return false;
+    bool ok = std::fputs("5", f) >= 0;
+    ok = std::fclose(f) == 0 && ok;
+    return ok;
+}
+
+// ---------------------------------------------------------------- loading
+inline std::string Lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+inline bool EndsWith(const std::string &s, const std::string &suffix)
+{
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// PLY (vcg's importer, plylib) or OFF, by extension. Empty string on success.
+inline std::string LoadMesh(TMesh &m, const std::string &path)
+{
+    m.Clear();
+    const std::string ext = Lower(path);
+    int mask = 0;
+    if (EndsWith(ext, ".ply")) {
+        int e = vcg::tri::io::ImporterPLY<TMesh>::Open(m, path.c_str(), mask);
+        if (e != 0 && vcg::tri::io::ImporterPLY<TMesh>::ErrorCritical(e))
+            return std::string("PLY import failed: ") + vcg::tri::io::ImporterPLY<TMesh>::ErrorMsg(e);
+    } else if (EndsWith(ext, ".off")) {
+        int e = vcg::tri::io::ImporterOFF<TMesh>::Open(m, path.c_str(), mask);
+        if (e != 0)
+            return std::string("OFF import failed: ") + vcg::tri::io::ImporterOFF<TMesh>::ErrorMsg(e);
+    } else {
+        return "unknown mesh format (PLY or OFF): " + path;
+    }
+    if (m.fn == 0) return "no faces in " + path;
+    for (auto &f : m.face) f.Q() = 0;
+    vcg::tri::UpdateBounding<TMesh>::Box(m);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
+    return "";
+}
+
+// Midpoint subdivision, `steps` times (vcg's tri::Refine with MidPoint, every edge split: 4 faces
+// per face, the surface unchanged).
+inline void MidpointRefine(TMesh &m, int steps)
+{
+    for (int s = 0; s < steps; ++s) {
+        vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+        vcg::tri::Refine<TMesh, vcg::tri::MidPoint<TMesh>>(m, vcg::tri::MidPoint<TMesh>(&m), 0);
+    }
+    vcg::tri::Allocator<TMesh>::CompactEveryVector(m);
+    vcg::tri::UpdateBounding<TMesh>::Box(m);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
+}
+
+// ---------------------------------------------------------------- topology
+inline uint64_t PairKey(int a, int b)
+{
+    if (a > b) std::swap(a, b);
+    return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
+}
+
+// V - E + F of a triangle mesh (referenced vertices only).
+inline long EulerCharacteristic(const TMesh &m)
+{
+    std::vector<uint64_t> edges;
+    std::vector<char> used(m.vert.size(), 0);
+    long faces = 0;
+    for (const auto &f : m.face) {
+        if (f.IsD()) continue;
+        ++faces;
+        for (int k = 0; k < 3; ++k) {
+            int a = int(vcg::tri::Index(m, f.cV(k))), b = int(vcg::tri::Index(m, f.cV((k + 1) % 3)));
+            edges.push_back(PairKey(a, b));
+            used[a] = 1;
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    long e = long(std::unique(edges.begin(), edges.end()) - edges.begin());
+    long v = long(std::count(used.begin(), used.end(), 1));
+    return v - e + faces;
+}
+
+// V - E + F of a polygon mesh (quads counted once: their diagonal is no edge).
+inline long EulerCharacteristic(const vcg_ext::PolygonMesh &pm)
+{
+    std::vector<uint64_t> edges;
+    std::vector<char> used(pm.points.size(), 0);
+    for (const auto &f : pm.faces)
+        for (size_t k = 0; k < f.size(); ++k) {
+            edges.push_back(PairKey(f[k], f[(k + 1) % f.size()]));
+            used[f[k]] = 1;
+        }
+    std::sort(edges.begin(), edges.end());
+    long e = long(std::unique(edges.begin(), edges.end()) - edges.begin());
+    long v = long(std::count(used.begin(), used.end(), 1));
+    return v - e + long(pm.faces.size());
+}
+
+// Where the edges used by more than two faces are (up to `max`): "(x y z)-(x y z) n faces".
+inline std::vector<std::string> NonManifoldEdges(const TMesh &m, size_t max)
+{
+    std::vector<std::pair<uint64_t, int>> he;
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                he.push_back({PairKey(int(vcg::tri::Index(m, f.cV(k))), int(vcg::tri::Index(m, f.cV((k + 1) % 3)))), 0});
+    std::sort(he.begin(), he.end());
+    std::vector<std::string> out;
+    for (size_t i = 0; i < he.size() && out.size() < max;) {
+        size_t j = i;
+        while (j < he.size() && he[j].first == he[i].first) ++j;
+        if (j - i > 2) {
+            const P3 &a = m.vert[he[i].first >> 32].cP(), &b = m.vert[he[i].first & 0xffffffffu].cP();
+            char buf[200];
+            std::snprintf(buf, sizeof buf, "(%g %g %g)-(%g %g %g) %d faces", a[0], a[1], a[2], b[0], b[1], b[2], int(j - i));
+            out.push_back(buf);
+        }
+        i = j;
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------- front as position pairs
+typedef std::array<float, 6> PosEdge;  // end points' coordinates, smaller end point first
+inline PosEdge MakePosEdge(const P3 &a, const P3 &b)
+{
+    std::array<float, 3> x{a[0], a[1], a[2]}, y{b[0], b[1], b[2]};
+    if (y < x) std::swap(x, y);
+    return {x[0], x[1], x[2], y[0], y[1], y[2]};
+}
+
+// Sorted, unique: the selected face-edges (selectedOnly) or all edges.
+inline std::vector<PosEdge> EdgesByPosition(const TMesh &m, bool selectedOnly)
+{
+    std::vector<PosEdge> s;
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                if (!selectedOnly || f.IsFaceEdgeS(k)) s.push_back(MakePosEdge(f.cP(k), f.cP((k + 1) % 3)));
+    std::sort(s.begin(), s.end());
+    s.erase(std::unique(s.begin(), s.end()), s.end());
+    return s;
+}
+
+// ---------------------------------------------------------------- geometry
+inline double Volume(const TMesh &m)
+{
+    double v = 0;
+    for (const auto &f : m.face)
+        if (!f.IsD()) {
+            vcg::Point3d a = vcg::Point3d::Construct(f.cP(0)), b = vcg::Point3d::Construct(f.cP(1)),
+                         c = vcg::Point3d::Construct(f.cP(2));
+            v += a * (b ^ c) / 6.0;
+        }
+    return v;
+}
+
+// Largest distance from the samples of `from` (vertices, edge midpoints, face centroids) to the
+// surface of `to` (closest point on a triangle, vcg's static grid).
+inline double OneSidedDistance(const TMesh &from, TMesh &to)
+{
+    typedef vcg::GridStaticPtr<TFace, float> Grid;
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(to);
+    vcg::tri::UpdateBounding<TMesh>::Box(to);
+    Grid grid;
+    grid.Set(to.face.begin(), to.face.end());
+    const float maxDist = to.bbox.Diag();
+    double worst = 0;
+    auto probe = [&](const P3 &s) {
+        float dist = maxDist;
+        P3 closest;
+        vcg::tri::GetClosestFaceBase(to, grid, s, maxDist, dist, closest);
+        worst = std::max(worst, double(dist));
+    };
+    for (const auto &v : from.vert)
+        if (!v.IsD()) probe(v.cP());
+    for (const auto &f : from.face)
+        if (!f.IsD()) {
+            probe((f.cP(0) + f.cP(1) + f.cP(2)) / 3.f);
+            for (int k = 0; k < 3; ++k) probe((f.cP(k) + f.cP((k + 1) % 3)) / 2.f);
+        }
+    return worst;
+}
+
+inline double Hausdorff(TMesh &a, TMesh &b) { return std::max(OneSidedDistance(a, b), OneSidedDistance(b, a)); }
+
+}  // namespace qmf_bench
+
+#endif
