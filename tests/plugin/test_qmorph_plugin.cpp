@@ -17,22 +17,12 @@ using namespace qmf_test;
 namespace {
 const QString kQMorph = "Q-Morph Quad Conversion";
 
-MeshModel *AddTMesh(PluginHarness &h, const TMesh &t)
-{
-    std::vector<vcg::Point3f> v;
-    std::vector<std::array<int, 3>> f;
-    for (auto &x : t.vert) v.push_back(x.cP());
-    for (auto &x : t.face)
-        f.push_back({int(vcg::tri::Index(t, x.cV(0))), int(vcg::tri::Index(t, x.cV(1))), int(vcg::tri::Index(t, x.cV(2)))});
-    return h.AddMesh(v, f);
-}
-
 // A cube with its 12 edges selected on both faces (4 cells per side edge).
 MeshModel *AddSelectedCube(PluginHarness &h)
 {
     TMesh t;
     MakeCube(t, 4, 0.3f, 2);
-    MeshModel *mm = AddTMesh(h, t);
+    MeshModel *mm = h.AddCopyOf(t);
     mm->updateDataMask(MeshModel::MM_FACEFACETOPO);
     vcg::tri::UpdateTopology<CMeshO>::FaceFace(mm->cm);
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm->cm);
@@ -130,7 +120,7 @@ TEST(QMorphPlugin, OpenMeshUsesItsBoundaryAsFront)
     PluginHarness h;
     TMesh t;
     MakeGrid(t, 6);
-    AddTMesh(h, t);
+    h.AddCopyOf(t);
     FilterRun r = h.Apply(kQMorph);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_TRUE(r.Logged("36 quads, 0 triangles left"));
@@ -142,7 +132,7 @@ TEST(QMorphPlugin, ClosedMeshWithoutSelectionIsRefused)
     PluginHarness h;
     TMesh t;
     MakeCube(t, 3);
-    AddTMesh(h, t);
+    h.AddCopyOf(t);
     ExpectRefused(h, h.Defaults(kQMorph), "Split Triangles along Front");
 }
 

@@ -26,22 +26,12 @@ RichParameterList Defaults(PluginHarness &h, const QString &filter)
 }
 FilterRun RunFilter(PluginHarness &h, const QString &filter) { return h.Apply(filter, Defaults(h, filter)); }
 
-MeshModel *AddTMesh(PluginHarness &h, const TMesh &t, const QString &name = "mesh")
-{
-    std::vector<vcg::Point3f> v;
-    std::vector<std::array<int, 3>> f;
-    for (auto &x : t.vert) v.push_back(x.cP());
-    for (auto &x : t.face)
-        f.push_back({int(vcg::tri::Index(t, x.cV(0))), int(vcg::tri::Index(t, x.cV(1))), int(vcg::tri::Index(t, x.cV(2)))});
-    return h.AddMesh(v, f, name);
-}
-
 // An n x n-per-side cube (irregular inside each side) with region ids = side (0..5).
 MeshModel *AddLabelledCube(PluginHarness &h, int n)
 {
     TMesh t;
     MakeCube(t, n, 0.3f, 9);
-    MeshModel *mm = AddTMesh(h, t);
+    MeshModel *mm = h.AddCopyOf(t);
     mm->updateDataMask(MeshModel::MM_FACEQUALITY);
     for (auto &f : mm->cm.face) {
         vcg::Point3f c = (f.P(0) + f.P(1) + f.P(2)) / 3.f;
@@ -179,7 +169,7 @@ TEST(SmoothPlugin, RefusesAMeshWithoutRegionIds)
     PluginHarness h;
     TMesh t;
     MakeCube(t, 2);
-    AddTMesh(h, t);
+    h.AddCopyOf(t);
     ExpectRefused(h, Defaults(h, kSmooth), "no face quality");
 }
 

@@ -17,16 +17,6 @@ const QString kVsa = "Segment by Variational Shape Approximation";
 const QString kSmooth = "Smooth Region Boundaries";
 const QString kSplit = "Split Triangles along Front";
 
-MeshModel *AddTMesh(PluginHarness &h, const TMesh &t, const QString &name = "mesh")
-{
-    std::vector<vcg::Point3f> v;
-    std::vector<std::array<int, 3>> f;
-    for (auto &x : t.vert) v.push_back(x.cP());
-    for (auto &x : t.face)
-        f.push_back({int(vcg::tri::Index(t, x.cV(0))), int(vcg::tri::Index(t, x.cV(1))), int(vcg::tri::Index(t, x.cV(2)))});
-    return h.AddMesh(v, f, name);
-}
-
 // An edge-only layer (not current) holding the polyline.
 MeshModel *AddPolylineLayer(PluginHarness &h, const TMesh &poly, const QString &name)
 {
@@ -92,7 +82,7 @@ void MakeSectionedCube(PluginHarness &h, TMesh &cube, TMesh &poly)
 {
     MakeCube(cube, 6, 0.3f, 11);
     ASSERT_TRUE(PlaneSectionPolyline(cube, D3(0.2, 0.3, 1).Normalize(), 0.1234, poly));
-    AddTMesh(h, cube);
+    h.AddCopyOf(cube);
     AddPolylineLayer(h, poly, "mesh_front");
 }
 
@@ -200,7 +190,7 @@ TEST(SplitPlugin, DefaultPolylineLayerIsTheFrontLayerElseTheNextOne)
     TMesh cube, poly;
     MakeCube(cube, 3);
     MakePolyline(poly, {P3(1, 0.1f, 0.2f), P3(1, 0.3f, 0.4f)});
-    MeshModel *mesh = AddTMesh(h, cube);
+    MeshModel *mesh = h.AddCopyOf(cube);
     MeshModel *other = AddPolylineLayer(h, poly, "other");
     EXPECT_EQ(Defaults(h, kSplit).getMesh("PolylineLayer"), other) << "no '_front' layer: the next one";
     MeshModel *front = AddPolylineLayer(h, poly, "mesh_front");
@@ -217,7 +207,7 @@ TEST(SplitPlugin, UserPolylineWithPointsInsideFacesIsTraced)
     MakeCube(cube, 5, 0.25f, 3);
     // A closed loop on the cube's faces through points inside faces, around the x axis.
     MakePolyline(poly, {P3(0.13f, -1, 0.21f), P3(-0.11f, 0.17f, -1), P3(0.09f, 1, -0.23f), P3(-0.07f, -0.19f, 1)}, true);
-    AddTMesh(h, cube);
+    h.AddCopyOf(cube);
     AddPolylineLayer(h, poly, "drawn");
     FilterRun r = RunFilter(h, kSplit);
     ASSERT_TRUE(r.ok) << r.error;
@@ -240,14 +230,14 @@ TEST(SplitPlugin, BadInputIsRefusedAndNothingChanges)
         PluginHarness h;
         TMesh cube;
         MakeCube(cube, 2);
-        AddTMesh(h, cube);
+        h.AddCopyOf(cube);
         ExpectRefused(h, "the polyline layer is the mesh itself");
     }
     {
         PluginHarness h;
         TMesh cube, none;
         MakeCube(cube, 2);
-        AddTMesh(h, cube);
+        h.AddCopyOf(cube);
         AddPolylineLayer(h, none, "mesh_front");
         ExpectRefused(h, "is empty: it has no edges");
     }
@@ -255,8 +245,8 @@ TEST(SplitPlugin, BadInputIsRefusedAndNothingChanges)
         PluginHarness h;
         TMesh cube;
         MakeCube(cube, 2);
-        AddTMesh(h, cube);
-        AddTMesh(h, cube, "mesh_front");
+        h.AddCopyOf(cube);
+        h.AddCopyOf(cube, "mesh_front");
         h.doc.setCurrent(h.doc.meshList[0]);
         ExpectRefused(h, "not a polyline");
     }
@@ -278,7 +268,7 @@ TEST(SplitPlugin, BadInputIsRefusedAndNothingChanges)
         TMesh cube, poly;
         MakeCube(cube, 3);
         MakePolyline(poly, {P3(1, 0.1f, 0.2f), P3(1.02f, 0.3f, 0.4f)});
-        AddTMesh(h, cube);
+        h.AddCopyOf(cube);
         AddPolylineLayer(h, poly, "mesh_front");
         ExpectRefused(h, "from the surface");
     }
@@ -287,7 +277,7 @@ TEST(SplitPlugin, BadInputIsRefusedAndNothingChanges)
         TMesh cube, poly;
         MakeCube(cube, 3, 0.2f, 4);
         MakePolyline(poly, {P3(1, -0.8f, -0.8f), P3(1, 0.8f, 0.7f), P3(1, 0.8f, -0.75f), P3(1, -0.7f, 0.8f)});
-        AddTMesh(h, cube);
+        h.AddCopyOf(cube);
         AddPolylineLayer(h, poly, "mesh_front");
         ExpectRefused(h, "cross");
     }

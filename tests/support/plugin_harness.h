@@ -94,6 +94,18 @@ public:
         return mm;
     }
 
+    // A layer copied from any vcg triangle mesh (e.g. the unit tests' generated meshes).
+    template <class SourceMesh>
+    MeshModel *AddCopyOf(const SourceMesh &t, const QString &name = "mesh")
+    {
+        std::vector<vcg::Point3f> v;
+        std::vector<std::array<int, 3>> f;
+        for (auto &x : t.vert) v.push_back(vcg::Point3f::Construct(x.cP()));
+        for (auto &x : t.face)
+            f.push_back({int(vcg::tri::Index(t, x.cV(0))), int(vcg::tri::Index(t, x.cV(1))), int(vcg::tri::Index(t, x.cV(2)))});
+        return AddMesh(v, f, name);
+    }
+
     MeshModel *LoadOff(const std::string &path, const QString &name = "mesh")
     {
         MeshModel *mm = doc.addNewMesh(QString::fromStdString(path), name, true);
