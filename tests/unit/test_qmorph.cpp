@@ -60,7 +60,9 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
     EXPECT_EQ(out.IsClosed(), in.IsClosed());
     EXPECT_EQ(out.components, in.components);
     EXPECT_EQ(r.quality.invertedQuads, 0) << Describe(r);
-    if (r.quads) EXPECT_GT(r.quality.minJacobian, 0.0) << Describe(r);
+    if (r.quads) {
+        EXPECT_GT(r.quality.minJacobian, 0.0) << Describe(r);
+    }
     EXPECT_EQ(SelectedEdges(m), selected) << "the selection must be exactly the initial front";
     const std::set<PosEdge> edges = AllEdges(m);
     int lost = 0;
