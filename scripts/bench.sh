@@ -7,7 +7,8 @@
 #  3. configures build-bench/ (Release, -DQMF_BUILD_BENCH=ON -DQMF_BUILD_TESTS=OFF) and builds qmf_bench;
 #  4. runs it (default: the pipeline on fandisk, rocker_arm_3356, rocker_arm_20k, bunny_3k, elephant,
 #     casting from ../shared/meshes when that folder exists, else the meshes set-up extracted into
-#     .deps/meshes; plus the ~1M-face case), writes out/bench/report.md and prints it.
+#     .deps/meshes; plus the ~1M-face cases: armadillo refined x4 and x16, fandisk x64, by midpoint
+#     subdivision), writes out/bench/report.md and prints it (about 4 minutes on 2 cores).
 # Arguments after the flags go to qmf_bench (e.g. `--big none`, `--meshes DIR`, mesh names;
 # `build-bench/tests/bench/qmf_bench --help`). BUILD_DIR overrides build-bench/, JOBS the build jobs.
 set -euo pipefail

@@ -208,8 +208,8 @@ void Usage()
         "  Default names: fandisk rocker_arm_3356 rocker_arm_20k bunny_3k elephant casting (those present).\n"
         "  --meshes DIR        mesh folder (default: ../shared/meshes when it exists, else .deps/meshes)\n"
         "  --all               every .ply/.off in the folder\n"
-        "  --big NAMES|none    base mesh(es) of the ~1M-face case, comma-separated (default: the first of\n"
-        "                      armadillo_52k, armadillo, fandisk found)\n"
+        "  --big NAMES|none    base mesh(es) of the ~1M-face case, comma-separated (default: armadillo_52k\n"
+        "                      (or armadillo) and fandisk, those found)\n"
         "  --big-faces N       target face count of the big case (default 1000000; midpoint steps x4)\n"
         "  --no-ladder         skip the ~1/4-size run of the big case (memory linearity)\n"
         "  --big-vsa MODE      threshold (default) or fixed; --big-regions K (default 200)\n"
@@ -830,12 +830,13 @@ int main(int argc, char **argv)
             jobs.push_back({BaseName(n), path, 0, false});
         }
     if (o.big != "none") {
-        // "auto": the first of armadillo_52k, armadillo, fandisk found; else a comma-separated list
-        // (the ~1/4-size ladder run only for the first).
+        // "auto": armadillo (armadillo_52k or armadillo, organic, a few hundred regions) and fandisk (CAD),
+        // those found; else a comma-separated list. The ~1/4-size ladder run only for the first.
         std::vector<std::string> bases;
         if (o.big == "auto") {
-            for (const char *c : {"armadillo_52k", "armadillo", "fandisk"})
+            for (const char *c : {"armadillo_52k", "armadillo"})
                 if (bases.empty() && !ResolveMesh(o, c).empty()) bases.push_back(c);
+            if (!ResolveMesh(o, "fandisk").empty()) bases.push_back("fandisk");
             if (bases.empty()) report.rows[T_NOTES].push_back({"big case", "no armadillo or fandisk in " + o.meshDir});
         } else {
             std::stringstream ss(o.big);
@@ -857,6 +858,12 @@ int main(int argc, char **argv)
         }
     }
 
+    std::string loadBefore = "?";
+    {
+        std::ifstream la("/proc/loadavg");
+        std::string a, b, c;
+        if (la >> a >> b >> c) loadBefore = a + " " + b + " " + c;
+    }
     const auto started = Clock::now();
     for (const Job &j : jobs) RunJobInChild(j, o, report);
     const double total = Since(started);
@@ -874,7 +881,7 @@ int main(int argc, char **argv)
 #endif
     pre += Fmt("; CGAL: %s; total benchmark time %.0f s\n", CgalAvailable() ? ("yes, " + CgalVersion()).c_str() : "absent", total);
     pre += Fmt("- timings: wall clock (steady_clock), best of %d runs on the small meshes, 1 run on the big ones; "
-               "each mesh in its own process\n", o.repeats);
+               "each mesh in its own process; load average at the start: %s\n", o.repeats, loadBefore.c_str());
     const std::string md = Markdown(report, pre);
     std::fputs(md.c_str(), stdout);
     if (!o.out.empty()) {
