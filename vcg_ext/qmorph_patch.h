@@ -42,7 +42,7 @@ struct PatchParams {
 
 struct PatchStats {
     int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
-    int pairedTriangles = 0, doublets = 0, iterations = 0;
+    int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0;
 };
 
 class PatchMesher
@@ -97,6 +97,7 @@ public:
         PairLeftoverTriangles(p.migrationMinJacobian);
         MigrateTrianglesIntoPairs();
         DissolveDoublets();
+        ImproveValences();
         if (p.smoothing)
             for (int it = 0; it < p.finalSmoothing; ++it) SmoothAll();
         return stats;
@@ -737,6 +738,67 @@ private:
         P3 n = m.FaceNormal(m.heFace[h1]) + m.FaceNormal(m.heFace[h2]);
         return QuadQuality(a, b, c, d, n) > p.minQuadJacobian && m.QuadHasFreeDiagonal(a, b, c, d, {m.heFace[h1], m.heFace[h2]}) &&
                InnerNodesNearQuad({v}, {a, b, c, d});
+    }
+
+    // Topological clean-up: an edge shared by two quads is turned to join the other pair of
+    // opposite corners of their hexagon when that brings the four nodes' valences closer to their
+    // ideal (4 inside; on the patch boundary, one more than the number of right angles that fit
+    // in the node's angle) and the two new quads are not worse than 0.3 scaled Jacobian (or than
+    // the old ones).
+    void ImproveValences()
+    {
+        std::vector<int> ideal(m.VertexCount(), 4);
+        for (int v = 0; v < m.VertexCount(); ++v) {
+            if (!m.vertAlive[v] || !m.OnBoundary(v)) continue;
+            double angle = 0;
+            m.ForEachOutgoing(v, [&](int g) { angle += m.CornerAngle(g); });
+            ideal[v] = std::max(1, int(std::lround(angle / (M_PI / 2)))) + 1;
+        }
+        auto dev = [&](int v, int val) { double d = val - ideal[v]; return d * d; };
+        for (int pass = 0; pass < 4; ++pass) {
+            int turned = 0;
+            for (int h = 0; h < m.HalfEdgeCount(); ++h) {
+                int t = m.heTwin[h];
+                if (t < h || !m.HeAlive(h) || !m.IsQuad(m.heFace[h]) || !m.IsQuad(m.heFace[t])) continue;
+                // hexagon b c d a e f (quads (a b c d) and (b a e f) share a-b)
+                std::vector<int> loop{m.heNext[h], m.heNext[m.heNext[h]], m.hePrev[h], m.heNext[t], m.heNext[m.heNext[t]], m.hePrev[t]};
+                int v[6];
+                for (int k = 0; k < 6; ++k) v[k] = m.Org(loop[k]);
+                bool distinct = true;
+                for (int i = 0; i < 6; ++i)
+                    for (int j = i + 1; j < 6; ++j) distinct = distinct && m.vertKey[v[i]] != m.vertKey[v[j]];
+                if (!distinct) continue;
+                int val[6];
+                for (int k = 0; k < 6; ++k) val[k] = m.Valence(v[k]);
+                const int a = 3, b = 0;  // positions of the current diagonal's ends
+                P3 n = m.FaceNormal(m.heFace[h]) + m.FaceNormal(m.heFace[t]);
+                double oldQ = std::min(m.QuadScaledJacobian(m.heFace[h]), m.QuadScaledJacobian(m.heFace[t]));
+                double oldDev = dev(v[a], val[a]) + dev(v[b], val[b]);
+                int bestI = -1;
+                double bestGain = 1e-9, bestQ = 0;
+                for (int i : {1, 2}) {  // new diagonal between positions i and i+3
+                    int j = i + 3;
+                    if (m.EdgeExists(v[i], v[j])) continue;
+                    double before = oldDev + dev(v[i], val[i]) + dev(v[j], val[j]);
+                    double after = dev(v[a], val[a] - 1) + dev(v[b], val[b] - 1) + dev(v[i], val[i] + 1) + dev(v[j], val[j] + 1);
+                    double q = std::min(QuadQuality(v[i], v[i + 1], v[i + 2], v[j], n), QuadQuality(v[j], v[(j + 1) % 6], v[(j + 2) % 6], v[i], n));
+                    if (q < std::min(0.3, oldQ)) continue;
+                    if (before - after > bestGain) { bestGain = before - after; bestI = i; bestQ = q; }
+                }
+                if (bestI < 0) continue;
+                const int i = bestI, j = i + 3;
+                std::vector<int> corners1{v[i], v[i + 1], v[i + 2], v[j]}, corners2{v[j], v[(j + 1) % 6], v[(j + 2) % 6], v[i]};
+                if (!m.QuadHasFreeDiagonal(corners1[0], corners1[1], corners1[2], corners1[3], {m.heFace[h], m.heFace[t]}) ||
+                    !m.QuadHasFreeDiagonal(corners2[0], corners2[1], corners2[2], corners2[3], {m.heFace[h], m.heFace[t]}))
+                    continue;
+                int level = std::max(m.faceLevel[m.heFace[h]], m.faceLevel[m.heFace[t]]);
+                m.ReplaceRegion(loop, {m.heFace[h], m.heFace[t]}, {}, {{i, i + 1, i + 2, j}, {j, (j + 1) % 6, (j + 2) % 6, i}}, level);
+                (void)bestQ;
+                ++turned;
+            }
+            stats.valenceTurns += turned;
+            if (!turned) break;
+        }
     }
 
     // ---- smoothing ------------------------------------------------------------------------------
