@@ -49,8 +49,8 @@ void QMorphFrontPlugin::initSmoothParameters(MeshDocument &, RichParameterList &
                            "A curve point inside an edge that is closer to one of the edge's vertices than this "
                            "percentage of the edge length is moved onto that vertex, so splitting the mesh along the "
                            "curves later makes no sliver triangles. Points of different curves on one edge also keep "
-                           "this distance. 0 to 45; the default 10% keeps every new vertex at least a tenth of an edge "
-                           "from the old ones."));
+                           "this distance. 0 to 45; the default 25% keeps every new vertex at least a quarter of an edge "
+                           "from the old ones (fewer slivers along the front: better quads next to it in Q-Morph)."));
     par.addParam(RichInt("MinRegionFaces", d.minRegionFaces, "Minimum region size (faces)",
                          "Regions with fewer faces are merged into the neighbouring region they share the longest "
                          "boundary with before the curves are built, so tiny regions make no curves (the face quality "

@@ -756,7 +756,7 @@ public:
 
     struct Params {
         int iterations = 3;        // straightening passes (0: the raw boundary, chains of mesh edges)
-        double snapPercent = 10;   // % of an edge's length: closer edge points snap to its vertex
+        double snapPercent = 25;   // % of an edge's length: closer edge points snap to its vertex
         int minRegionFaces = 0;    // regions with fewer faces join their longest-boundary neighbour (0: off)
 
         std::string Validate() const

@@ -70,7 +70,7 @@ TEST(SmoothPlugin, DefaultsAreThePapers)
     AddLabelledCube(h, 2);
     RichParameterList par = Defaults(h, kSmooth);
     EXPECT_EQ(par.getInt("Iterations"), 3);
-    EXPECT_FLOAT_EQ(par.getFloat("SnapDistance"), 10.f);
+    EXPECT_FLOAT_EQ(par.getFloat("SnapDistance"), 25.f);
     EXPECT_EQ(par.getInt("MinRegionFaces"), 0);
 }
 
