@@ -79,7 +79,7 @@ enum TableId {
 };
 
 struct TableDef {
-    const char *title;
+    std::string title;
     std::vector<std::string> header;
     const char *note;
 };
@@ -87,16 +87,21 @@ struct TableDef {
 const TableDef &Def(int t)
 {
     static const std::vector<TableDef> defs = {
-        {"Filter 1 - VSA segmentation (defaults: threshold mode, 60 deg, 2 initial seeds, <= 200 regions, <= 30 Lloyd iterations per round)",
+        {Fmt("Filter 1 - VSA segmentation (defaults: %s mode, %g deg, %d initial seeds, <= %d regions, <= %d Lloyd "
+             "iterations per round)", VSA::Params().mode == VSA::ThresholdSeeding ? "threshold" : "fixed-count",
+             VSA::Params().thresholdAngleDeg, VSA::Params().initialSeeds, VSA::Params().maxRegions,
+             VSA::Params().maxIterations),
          {"mesh", "faces", "regions", "Lloyd it. (rounds)", "L2,1 error", "max dev. (deg)", "time (ms)", "ms / Lloyd it."},
          "time: wall clock of VSASegmentation::Segment (face-face topology included), best of the repeats; ms / Lloyd "
          "it. = time / Lloyd iterations (seeding and statistics included)."},
-        {"Filter 2 - boundary smoothing (defaults: 3 iterations, snap 10 %)",
+        {Fmt("Filter 2 - boundary smoothing (defaults: %d iterations, snap %g %%)", Smoothing::Params().iterations,
+             Smoothing::Params().snapPercent),
          {"mesh", "curves", "corners", "points before -> after", "points / curve", "length reduction %",
           "jaggedness before -> after", "time (ms)", "of which straightening (ms)"},
          "time: RegionBoundarySmoothing::Smooth + ToPolylines + BuildEdgeMesh (what the filter computes); length "
          "reduction = 1 - length after / length before (total over the curves); jaggedness = total |geodesic turning| / length."},
-        {"Filter 3 - splitting triangles along the front (defaults: locate tolerance 1e-4 % of the diagonal)",
+        {Fmt("Filter 3 - splitting triangles along the front (defaults: locate tolerance %g %% of the diagonal)",
+             Embedding::Params().locateTolerancePercent),
          {"mesh", "polyline points", "faces crossed", "faces split", "vertices added", "faces added", "front edges",
           "patches", "min angle (deg)", "time (ms)", "prepare / apply (ms)"},
          "time: PolylineEmbedding::Embed on the front layer as the plugin builds it (float coordinates, re-located)."},
