@@ -221,14 +221,6 @@ public:
         }
         return n * 0.5;
     }
-    P3 FaceCentroid(int f) const
-    {
-        P3 c(0, 0, 0);
-        int h = faceHe[f];
-        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) c += pos[Org(h)];
-        return c / double(faceSize[f]);
-    }
-
     // Unit normal of a node from its faces (all in one patch: never averaged across a crease).
     P3 VertexNormal(int v) const
     {
@@ -236,17 +228,6 @@ public:
         ForEachOutgoing(v, [&](int h) { n += FaceNormal(heFace[h]); });
         double l = n.Norm();
         return l > 0 ? n / l : P3(0, 0, 1);
-    }
-
-    // Does face f keep its orientation against normal `n` (every corner turns left)?
-    bool FaceIsPositive(int f, const P3 &n) const
-    {
-        int h = faceHe[f];
-        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) {
-            P3 a = pos[Org(hePrev[h])], b = pos[Org(h)], c = pos[Dst(h)];
-            if (!(((b - a) ^ (c - b)) * n > 0)) return false;
-        }
-        return true;
     }
 
     // Scaled Jacobian of a quad: min over corners of (e1 x e2).n / (|e1||e2|).

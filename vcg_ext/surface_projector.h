@@ -38,8 +38,6 @@ public:
             }
     }
 
-    bool Empty() const { return tri.empty(); }
-
     // Closest point to p found by walking from `home` (updated to the triangle of the result).
     P3 Project(const P3 &p, int &home) const
     {
