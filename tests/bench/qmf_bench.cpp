@@ -14,6 +14,7 @@
 //
 // Each mesh runs in a child process (fork): a crash is reported as such, and memory figures are
 // per mesh. Rows travel to the parent as tab-separated lines; the parent prints markdown tables.
+#include <malloc.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -150,8 +151,8 @@ const TableDef &Def(int t)
         {"~1M faces (midpoint subdivision) - per-stage time and memory",
          {"mesh", "faces", "VSA mode", "regions", "VSA (s)", "VSA ms / Lloyd it.", "smoothing (s)", "split (s)",
           "Q-Morph (s)", "peak MiB VSA / smooth / split / Q-Morph", "peak bytes / input face"},
-         "peak MiB: VmHWM during the stage minus VmRSS before it (the stage's extra memory; the input mesh and the "
-         "earlier stages' results are in the baseline). peak bytes / input face: the process's peak VmHWM over the "
+         "peak MiB: VmHWM during the stage minus VmRSS before it (malloc_trim first: the stage's extra memory; the input "
+         "mesh and the earlier stages' results are in the baseline). peak bytes / input face: the process's peak VmHWM over the "
          "4 stages / input faces (compare the two sizes for linearity). Targets: VSA per-iteration no worse than CGAL "
          "(see the CGAL table), smoothing < 1 s, split < 1 s, Q-Morph < 30 s, memory linear."},
         {"Notes", {"mesh", "note"}, ""},
@@ -281,6 +282,7 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
 
     auto begin = [&](int stage, const char *what) {
         if (verbose) Progress(label, what);
+        malloc_trim(0);  // freed heap back to the system: RSS before the stage = what is live
         ResetPeak();
         r.rssBefore[stage] = RssMiB();
         return Clock::now();
