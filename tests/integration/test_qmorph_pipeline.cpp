@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "meshlab_runner.h"
+#include "obj_reader.h"
 #include "ply_reader.h"
 #include "quad_checks.h"
 #include "test_mesh.h"
@@ -18,34 +19,9 @@
 using namespace qmf_test;
 
 namespace {
-typedef std::array<double, 3> V3;
-
-struct Polys {
-    std::vector<V3> v;
-    std::vector<std::vector<int>> f;
-};
-
-Polys ReadObj(const std::string &path)
-{
-    Polys p;
-    std::ifstream in(path);
-    std::string line;
-    while (std::getline(in, line)) {
-        std::istringstream s(line);
-        std::string tag;
-        s >> tag;
-        if (tag == "v") { V3 x; s >> x[0] >> x[1] >> x[2]; p.v.push_back(x); }
-        if (tag != "f") continue;
-        std::vector<int> f;
-        std::string tok;
-        while (s >> tok) f.push_back(std::stoi(tok.substr(0, tok.find('/'))) - 1);
-        p.f.push_back(f);
-    }
-    return p;
-}
 
 // Quads of a PLY in MeshLab's polygonal form: triangle pairs sharing an edge flagged faux on both.
-Polys QuadsFromFauxPly(const PlyData &d, int &selectedFaceEdges, int &diagonalsOnFront)
+ObjData QuadsFromFauxPly(const PlyData &d, int &selectedFaceEdges, int &diagonalsOnFront)
 {
     const int FAUX0 = 0x40000, SEL0 = 0x8000;
     std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edgeFaces;  // edge -> (face, k)
@@ -54,7 +30,7 @@ Polys QuadsFromFauxPly(const PlyData &d, int &selectedFaceEdges, int &diagonalsO
             int a = d.faces[i][k], b = d.faces[i][(k + 1) % 3];
             edgeFaces[{std::min(a, b), std::max(a, b)}].push_back({int(i), k});
         }
-    Polys p;
+    ObjData p;
     for (auto &x : d.vertices) p.v.push_back(x);
     std::vector<char> used(d.faces.size(), 0);
     selectedFaceEdges = diagonalsOnFront = 0;
@@ -88,7 +64,7 @@ Polys QuadsFromFauxPly(const PlyData &d, int &selectedFaceEdges, int &diagonalsO
 
 // Quads as sorted vertex-index quadruples: the export writes MeshLab's live vertices in order, as
 // meshlabserver's PLY does, so both files share the numbering (positions are checked separately).
-std::multiset<std::vector<int>> QuadKeys(const Polys &p)
+std::multiset<std::vector<int>> QuadKeys(const ObjData &p)
 {
     std::multiset<std::vector<int>> keys;
     for (auto &f : p.f)
@@ -100,26 +76,23 @@ std::multiset<std::vector<int>> QuadKeys(const Polys &p)
     return keys;
 }
 
-double ScaledJacobian(const Polys &p, const std::vector<int> &f)
+double ScaledJacobian(const ObjData &p, const std::vector<int> &f)
 {
-    auto sub = [](const V3 &a, const V3 &b) { return V3{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
-    auto cross = [](const V3 &a, const V3 &b) { return V3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
-    auto dot = [](const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
     V3 n{0, 0, 0};
     for (int k = 0; k < 4; ++k) {
-        V3 c = cross(p.v[f[k]], p.v[f[(k + 1) % 4]]);
+        V3 c = Cross(p.v[f[k]], p.v[f[(k + 1) % 4]]);
         n = {n[0] + c[0], n[1] + c[1], n[2] + c[2]};
     }
-    double nl = std::sqrt(dot(n, n)), worst = 1;
+    double nl = std::sqrt(Dot(n, n)), worst = 1;
     for (int k = 0; k < 4; ++k) {
-        V3 e1 = sub(p.v[f[(k + 1) % 4]], p.v[f[k]]), e2 = sub(p.v[f[(k + 3) % 4]], p.v[f[k]]);
-        double l = std::sqrt(dot(e1, e1) * dot(e2, e2));
-        worst = std::min(worst, dot(cross(e1, e2), n) / (l * nl));
+        V3 e1 = Sub(p.v[f[(k + 1) % 4]], p.v[f[k]]), e2 = Sub(p.v[f[(k + 3) % 4]], p.v[f[k]]);
+        double l = std::sqrt(Dot(e1, e1) * Dot(e2, e2));
+        worst = std::min(worst, Dot(Cross(e1, e2), n) / (l * nl));
     }
     return worst;
 }
 
-void ToTMesh(const Polys &p, TMesh &m)
+void ToTMesh(const ObjData &p, TMesh &m)
 {
     std::vector<P3> v;
     for (auto &x : p.v) v.push_back(P3(float(x[0]), float(x[1]), float(x[2])));
@@ -149,7 +122,7 @@ void RunPipeline(const std::string &mesh, double hausdorffBound)
     EXPECT_NE(r.output.find(" 0 inverted"), std::string::npos);
 
     // the exported OBJ: real quads, as many as logged, a closed 2-manifold with the input's genus
-    Polys obj = ReadObj(dir + "/quads.obj");
+    ObjData obj = ReadObj(dir + "/quads.obj");
     int objQuads = 0, objTris = 0;
     for (auto &f : obj.f) (f.size() == 4 ? objQuads : objTris)++;
     EXPECT_EQ(objQuads, quads);
@@ -175,7 +148,7 @@ void RunPipeline(const std::string &mesh, double hausdorffBound)
     ASSERT_EQ(ply.error, "");
     ASSERT_EQ(ply.faceProps.count("flags"), 1u);
     int selected = 0, diagonalsOnFront = 0;
-    Polys fromPly = QuadsFromFauxPly(ply, selected, diagonalsOnFront);
+    ObjData fromPly = QuadsFromFauxPly(ply, selected, diagonalsOnFront);
     ASSERT_EQ(fromPly.v.size(), obj.v.size());
     double farthest = 0;
     for (size_t i = 0; i < obj.v.size(); ++i)

@@ -11,16 +11,12 @@
 #include <sstream>
 
 #include "meshlab_runner.h"
+#include "obj_reader.h"
 #include "ply_reader.h"
 
 using namespace qmf_test;
 
 namespace {
-typedef std::array<double, 3> V3;
-V3 Sub(const V3 &a, const V3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double Dot(const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Norm(const V3 &a) { return std::sqrt(Dot(a, a)); }
-
 double SegmentDistance(const V3 &p, const V3 &a, const V3 &b)
 {
     V3 d = Sub(b, a);
@@ -29,48 +25,6 @@ double SegmentDistance(const V3 &p, const V3 &a, const V3 &b)
     return Norm(Sub({a[0] + d[0] * s, a[1] + d[1] * s, a[2] + d[2] * s}, p));
 }
 
-struct Obj {
-    std::vector<V3> v;
-    std::vector<std::array<int, 3>> f;
-    std::vector<std::array<int, 2>> l;
-    int otherLines = 0;
-};
-
-// OFF (the input) or OBJ (v, f, l lines; 1-based indices).
-Obj Read(const std::string &path)
-{
-    Obj o;
-    std::ifstream in(path);
-    std::string line;
-    if (path.size() > 4 && path.substr(path.size() - 4) == ".off") {
-        std::getline(in, line);
-        int nv, nf, ne;
-        in >> nv >> nf >> ne;
-        o.v.resize(nv);
-        for (auto &p : o.v) in >> p[0] >> p[1] >> p[2];
-        for (int i = 0; i < nf; ++i) {
-            int k;
-            std::array<int, 3> t;
-            in >> k >> t[0] >> t[1] >> t[2];
-            o.f.push_back(t);
-        }
-        return o;
-    }
-    while (std::getline(in, line)) {
-        std::istringstream ss(line);
-        std::string w;
-        if (!(ss >> w) || w[0] == '#') continue;
-        if (w == "v") { V3 p; ss >> p[0] >> p[1] >> p[2]; o.v.push_back(p); }
-        else if (w == "l") {
-            std::vector<int> idx;
-            int i;
-            while (ss >> i) idx.push_back(i - 1);
-            for (size_t k = 0; k + 1 < idx.size(); ++k) o.l.push_back({idx[k], idx[k + 1]});
-        } else if (w == "f") { std::array<int, 3> t; ss >> t[0] >> t[1] >> t[2]; o.f.push_back(t); }
-        else if (w != "vn" && w != "vt" && w != "mtllib" && w != "usemtl" && w != "o" && w != "g") ++o.otherLines;
-    }
-    return o;
-}
 
 double Diagonal(const std::vector<V3> &v)
 {
@@ -83,7 +37,7 @@ double Diagonal(const std::vector<V3> &v)
 // Where a front point lies on the mesh: the vertex it is on, else the edges it is on (within tol).
 struct Location { int vertex = -1; std::set<std::pair<int, int>> edges; };
 
-Location Locate(const Obj &mesh, const V3 &p, double tol)
+Location Locate(const ObjData &mesh, const V3 &p, double tol)
 {
     Location loc;
     for (size_t i = 0; i < mesh.v.size(); ++i)
@@ -96,7 +50,7 @@ Location Locate(const Obj &mesh, const V3 &p, double tol)
     return loc;
 }
 
-bool InFace(const Location &l, const std::array<int, 3> &t)
+bool InFace(const Location &l, const std::vector<int> &t)
 {
     if (l.vertex >= 0) return l.vertex == t[0] || l.vertex == t[1] || l.vertex == t[2];
     for (int k = 0; k < 3; ++k)
@@ -133,7 +87,7 @@ TEST(SmoothFilter, FandiskSegmentedAndSmoothedThroughMeshlabserver)
     EXPECT_EQ(regions.faceProps["quality"].size(), 12946u);
 
     // The front: an edge-only OBJ with the logged counts; corners are the points not of degree 2.
-    Obj mesh = Read(input), front = Read(dir + "/front.obj");
+    ObjData mesh = ReadObj(input), front = ReadObj(dir + "/front.obj");
     EXPECT_TRUE(front.f.empty());
     EXPECT_EQ(front.otherLines, 0);
     ASSERT_EQ(int(front.v.size()), vertices);
@@ -176,7 +130,7 @@ TEST(SmoothFilter, FandiskSegmentedAndSmoothedThroughMeshlabserver)
     // Read back by MeshLab itself (an edge-only OBJ imports; one with faces too would not).
     RunResult back = RunMeshLabServer(dir, "-i front.obj -o again.obj");
     ASSERT_EQ(back.exitCode, 0) << back.output;
-    Obj again = Read(dir + "/again.obj");
+    ObjData again = ReadObj(dir + "/again.obj");
     EXPECT_EQ(again.v.size(), front.v.size());
     EXPECT_EQ(again.l.size(), front.l.size());
 }
@@ -217,7 +171,7 @@ TEST(SmoothFilter, BadInputIsRefusedWithAMessageInTheLog)
     EXPECT_NE(two.output.find("Smooth Region Boundaries: 1 curves (1 closed loops), 0 corners, 3 boundary edges"),
               std::string::npos)
         << two.output;
-    Obj front = Read(dir + "/front.obj");
+    ObjData front = ReadObj(dir + "/front.obj");
     EXPECT_EQ(front.v.size(), 3u);
     EXPECT_EQ(front.l.size(), 3u);
 }

@@ -11,43 +11,14 @@
 #include <sstream>
 
 #include "meshlab_runner.h"
+#include "obj_reader.h"
 #include "ply_reader.h"
 
 using namespace qmf_test;
 
 namespace {
-typedef std::array<double, 3> V3;
-V3 Sub(const V3 &a, const V3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-V3 Cross(const V3 &a, const V3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double Dot(const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double Norm(const V3 &a) { return std::sqrt(Dot(a, a)); }
 
 const int kFaceEdgeSel = 0x8000, kFaux = 0x40000;
-
-struct Polyline {
-    std::vector<V3> points;
-    std::vector<std::array<int, 2>> segments;
-};
-
-Polyline ReadObjLines(const std::string &path)
-{
-    Polyline p;
-    std::ifstream in(path);
-    std::string line;
-    while (std::getline(in, line)) {
-        std::istringstream ss(line);
-        std::string tag;
-        ss >> tag;
-        if (tag == "v") { V3 v; ss >> v[0] >> v[1] >> v[2]; p.points.push_back(v); }
-        if (tag == "l") {
-            std::vector<int> idx;
-            int i;
-            while (ss >> i) idx.push_back(i - 1);
-            for (size_t k = 0; k + 1 < idx.size(); ++k) p.segments.push_back({idx[k], idx[k + 1]});
-        }
-    }
-    return p;
-}
 
 double OffArea(const std::string &path, int &faces)
 {
@@ -134,8 +105,8 @@ TEST(SplitFilter, PipelineScriptSelectsExactlyTheFrontEdgesInThePlyFlags)
     EXPECT_EQ(wrong, 0) << "selected edges must be exactly the region-id boundaries";
 
     // Every segment of the saved front (6 decimals) is a chain of selected edges between its ends.
-    Polyline front = ReadObjLines(dir + "/front.obj");
-    ASSERT_GT(front.segments.size(), 100u);
+    ObjData front = ReadObj(dir + "/front.obj");
+    ASSERT_GT(front.l.size(), 100u);
     auto nearest = [&](const V3 &p) {
         int best = -1;
         double bd = 1e30;
@@ -146,8 +117,8 @@ TEST(SplitFilter, PipelineScriptSelectsExactlyTheFrontEdgesInThePlyFlags)
         return bd < 2e-6 ? best : -1;
     };
     int missing = 0;
-    for (auto &s : front.segments) {
-        const int a = nearest(front.points[s[0]]), b = nearest(front.points[s[1]]);
+    for (auto &s : front.l) {
+        const int a = nearest(front.v[s[0]]), b = nearest(front.v[s[1]]);
         if (a < 0 || b < 0) { ++missing; continue; }
         std::set<int> seen{a};
         std::queue<int> q;
@@ -168,8 +139,8 @@ TEST(SplitFilter, PipelineScriptSelectsExactlyTheFrontEdgesInThePlyFlags)
     EXPECT_EQ(missing, 0) << "front segments that are not chains of selected edges";
 
     // The front-edges layer (layer 2) holds the selected edges.
-    Polyline layer = ReadObjLines(dir + "/edges.obj");
-    EXPECT_EQ(int(layer.segments.size()), frontEdges);
+    ObjData layer = ReadObj(dir + "/edges.obj");
+    EXPECT_EQ(int(layer.l.size()), frontEdges);
 }
 
 TEST(SplitFilter, ErrorsGoToTheLogAndFailTheScript)

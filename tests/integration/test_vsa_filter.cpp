@@ -8,15 +8,12 @@
 #include <set>
 
 #include "meshlab_runner.h"
+#include "obj_reader.h"
 #include "ply_reader.h"
 
 using namespace qmf_test;
 
 namespace {
-typedef std::array<double, 3> V3;
-V3 Sub(const V3 &a, const V3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-V3 Cross(const V3 &a, const V3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double Dot(const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Planar patches: faces edge-connected to a start face whose normals are within 0.5 deg of it.
 std::vector<std::vector<int>> PlanarPatches(const PlyData &d, std::vector<double> &area)

@@ -8,6 +8,7 @@
 #include <regex>
 #include <sstream>
 
+#include "obj_reader.h"
 #include "plugin_harness.h"
 #include "test_mesh.h"
 #include <vcg_ext/mesh_checks.h>
@@ -52,26 +53,6 @@ void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::st
     EXPECT_EQ(h.doc.size(), layers);
 }
 
-// Faces of an OBJ file (an independent reader: "f a b c ..." lines, 1-based, maybe a/b/c).
-std::vector<std::vector<int>> ObjFaces(const std::string &path, int &vertices)
-{
-    std::ifstream in(path);
-    std::string line;
-    std::vector<std::vector<int>> faces;
-    vertices = 0;
-    while (std::getline(in, line)) {
-        std::istringstream s(line);
-        std::string tag;
-        s >> tag;
-        if (tag == "v") ++vertices;
-        if (tag != "f") continue;
-        std::vector<int> f;
-        std::string tok;
-        while (s >> tok) f.push_back(std::stoi(tok.substr(0, tok.find('/'))) - 1);
-        faces.push_back(f);
-    }
-    return faces;
-}
 }  // namespace
 
 TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
@@ -103,8 +84,9 @@ TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
     EXPECT_EQ(layer->cm.fn, 0);
     EXPECT_EQ(h.doc.mm(), mm) << "the quad mesh stays the current layer";
     // the export has real quads: 96 faces of 4 vertices, every edge used twice (closed)
-    int vertices = 0;
-    auto faces = ObjFaces(exportPath, vertices);
+    ObjData obj = ReadObj(exportPath);
+    const int vertices = int(obj.v.size());
+    const auto &faces = obj.f;
     ASSERT_EQ(faces.size(), 96u);
     std::map<std::pair<int, int>, int> uses;
     for (auto &f : faces) {
