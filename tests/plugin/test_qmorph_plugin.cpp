@@ -43,14 +43,7 @@ int CountFaceEdges(const CMeshO &m, bool (CFaceO::*test)(int) const)
 
 void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::string &expected)
 {
-    MeshSnapshot before = MeshSnapshot::Of(*h.doc.mm());
-    int layers = h.doc.size();
-    FilterRun r = h.Apply(kQMorph, par);
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
-    EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log";
-    EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
-    EXPECT_EQ(h.doc.size(), layers);
+    qmf_test::ExpectRefused(h, kQMorph, par, expected);
 }
 
 }  // namespace

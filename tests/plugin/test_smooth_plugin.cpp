@@ -16,14 +16,7 @@ namespace {
 const QString kVsa = "Segment by Variational Shape Approximation";
 const QString kSmooth = "Smooth Region Boundaries";
 
-// Defaults as MeshLab builds them (the MeshDocument overload; PluginHarness::Defaults uses the
-// MeshModel one, which only filter 1 implements).
-RichParameterList Defaults(PluginHarness &h, const QString &filter)
-{
-    RichParameterList par;
-    h.plugin.initParameterSet(h.Action(filter), h.doc, par);
-    return par;
-}
+RichParameterList Defaults(PluginHarness &h, const QString &filter) { return h.Defaults(filter); }
 FilterRun RunFilter(PluginHarness &h, const QString &filter) { return h.Apply(filter, Defaults(h, filter)); }
 
 // An n x n-per-side cube (irregular inside each side) with region ids = side (0..5).
@@ -45,15 +38,7 @@ MeshModel *AddLabelledCube(PluginHarness &h, int n)
 
 void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::string &expected)
 {
-    MeshSnapshot before = MeshSnapshot::Of(*h.doc.mm());
-    const int layers = h.doc.size();
-    FilterRun r = h.Apply(kSmooth, par);
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
-    EXPECT_NE(r.error.find("Smooth Region Boundaries: "), std::string::npos) << r.error;
-    EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log (meshlabserver prints only the log)";
-    EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
-    EXPECT_EQ(h.doc.size(), layers) << "a layer was added or removed";
+    qmf_test::ExpectRefused(h, kSmooth, par, expected);
 }
 
 bool OnCubeEdge(const vcg::Point3f &p)

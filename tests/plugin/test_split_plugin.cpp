@@ -86,27 +86,13 @@ void MakeSectionedCube(PluginHarness &h, TMesh &cube, TMesh &poly)
     AddPolylineLayer(h, poly, "mesh_front");
 }
 
-// Default parameters through the MeshDocument overload, the one MeshLab calls for these filters
-// (PluginHarness::Defaults uses the MeshModel overload, which only filter 1 implements).
-RichParameterList Defaults(PluginHarness &h, const QString &filter)
-{
-    RichParameterList par;
-    h.plugin.initParameterSet(h.Action(filter), h.doc, par);
-    return par;
-}
+RichParameterList Defaults(PluginHarness &h, const QString &filter) { return h.Defaults(filter); }
 FilterRun RunFilter(PluginHarness &h, const QString &filter) { return h.Apply(filter, Defaults(h, filter)); }
 
 // Bad input: false, the message in errorMessage and in the log, mesh and document unchanged.
 void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::string &expected)
 {
-    MeshSnapshot before = MeshSnapshot::Of(*h.doc.mm());
-    const int layers = h.doc.size();
-    FilterRun r = h.Apply(kSplit, par);
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
-    EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log (meshlabserver prints only the log)";
-    EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
-    EXPECT_EQ(h.doc.size(), layers) << "a layer was added or removed";
+    qmf_test::ExpectRefused(h, kSplit, par, expected);
 }
 void ExpectRefused(PluginHarness &h, const std::string &expected) { ExpectRefused(h, Defaults(h, kSplit), expected); }
 }  // namespace

@@ -20,14 +20,7 @@ void MakeOctahedron(PluginHarness &h)
 // Bad input: false, message in errorMessage and in the log, mesh untouched.
 void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::string &expected)
 {
-    MeshSnapshot before = MeshSnapshot::Of(*h.doc.mm());
-    int layers = h.doc.size();
-    FilterRun r = h.Apply(kVsa, par);
-    EXPECT_FALSE(r.ok);
-    EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
-    EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log (meshlabserver prints only the log)";
-    EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
-    EXPECT_EQ(h.doc.size(), layers);
+    qmf_test::ExpectRefused(h, kVsa, par, expected);
 }
 }  // namespace
 

@@ -5,6 +5,8 @@
 #define QMF_TESTS_PLUGIN_HARNESS_H
 
 #include <array>
+
+#include <gtest/gtest.h>
 #include <string>
 #include <vector>
 
@@ -142,6 +144,21 @@ public:
     }
     FilterRun Apply(const QString &filterName) { return Apply(filterName, Defaults(filterName)); }
 };
+
+// Bad input: false, the message in errorMessage (prefixed by the filter name) and in the log,
+// mesh and document unchanged.
+inline void ExpectRefused(PluginHarness &h, const QString &filter, const RichParameterList &par, const std::string &expected)
+{
+    MeshSnapshot before = MeshSnapshot::Of(*h.doc.mm());
+    const int layers = h.doc.size();
+    FilterRun r = h.Apply(filter, par);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find(expected), std::string::npos) << r.error;
+    EXPECT_EQ(r.error.rfind(filter.toStdString() + ": ", 0), 0u) << r.error;
+    EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log (meshlabserver prints only the log)";
+    EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
+    EXPECT_EQ(h.doc.size(), layers) << "a layer was added or removed";
+}
 
 }  // namespace qmf_test
 
