@@ -5,11 +5,21 @@
 set -euo pipefail
 cmd="$1"; dir="$2"
 mkdir -p "$dir"
+
+# Stops the server and waits until it is gone: an exiting Xvfb removes its socket file, which
+# would delete the socket of a server started right after it on the same display number.
+stop_server() {
+  local pid
+  pid="$(cat "$dir/xvfb.pid" 2>/dev/null || true)"
+  [ -n "$pid" ] || return 0
+  kill "$pid" 2>/dev/null || return 0
+  for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || return 0; sleep 0.05; done
+  kill -9 "$pid" 2>/dev/null || true
+}
+
 case "$cmd" in
   start)
-    if [ -f "$dir/xvfb.pid" ] && kill -0 "$(cat "$dir/xvfb.pid")" 2>/dev/null; then
-      kill "$(cat "$dir/xvfb.pid")" 2>/dev/null || true
-    fi
+    stop_server
     rm -f "$dir/xvfb.display" "$dir/xvfb.pid" "$dir/xvfb.fd"
     # setsid: the server outlives this script (CTest waits only for the script)
     setsid Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$dir/xvfb.fd" >"$dir/xvfb.log" 2>&1 < /dev/null &
@@ -22,7 +32,7 @@ case "$cmd" in
     echo "Xvfb running on $(cat "$dir/xvfb.display")"
     ;;
   stop)
-    if [ -f "$dir/xvfb.pid" ]; then kill "$(cat "$dir/xvfb.pid")" 2>/dev/null || true; fi
+    stop_server
     rm -f "$dir/xvfb.display" "$dir/xvfb.pid" "$dir/xvfb.fd"
     ;;
   *) echo "usage: $0 start|stop DIR" >&2; exit 2 ;;
