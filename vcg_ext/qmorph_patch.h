@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <vector>
 
 #include "qmorph_front.h"
@@ -580,6 +581,7 @@ private:
         int face;              // face entered (the triangle's own face for the start)
         int option;            // pentagon split used to get here
         int parent;
+        int depth;
     };
 
     // The pentagon formed by triangle `t` (its side k shared with quad across) and that quad:
@@ -609,7 +611,9 @@ private:
     void MigrateTrianglesIntoPairs()
     {
         std::vector<char> gaveUp;
-        for (int round = 0; round < 100000; ++round) {
+        int triangles = 0;  // a search needs a partner: none when a single triangle is left
+        for (int f = 0; f < m.FaceCount(); ++f) triangles += m.FaceAlive(f) && m.IsTri(f);
+        for (int round = 0; round < 100000 && triangles >= 2; ++round) {
             int tri = -1;
             for (int f = 0; f < m.FaceCount() && tri < 0; ++f)
                 if (m.FaceAlive(f) && m.IsTri(f) && (f >= int(gaveUp.size()) || !gaveUp[f])) tri = f;
@@ -632,6 +636,7 @@ private:
             if (shared < 0) return;  // cannot happen: the search simulated exactly these steps
             m.MergeTriangles(shared, 0);
             ++stats.pairedTriangles;
+            triangles -= 2;
         }
     }
 
@@ -643,13 +648,12 @@ private:
         start.face = tri;
         start.option = -1;
         start.parent = -1;
+        start.depth = 0;
         moves.assign(1, start);
-        std::vector<int> usedFaces{tri};
+        std::unordered_map<int, int> crossings;  // face -> how many searched triangles entered it
         for (size_t head = 0; head < moves.size() && moves.size() < 100000; ++head) {
             const Move t = moves[head];
-            int depth = 0;
-            for (int s = int(head); s >= 0; s = moves[s].parent) ++depth;
-            if (depth > 96) continue;  // a triangle on a straight front travels along the first row to a corner
+            if (t.depth > 96) continue;  // a triangle on a straight front travels along the first row to a corner
             for (int k = 0; k < 3; ++k) {
                 if (t.e[k] < 0 || m.heTwin[t.e[k]] < 0) continue;
                 int face = m.heFace[m.heTwin[t.e[k]]];
@@ -667,8 +671,7 @@ private:
                     continue;
                 }
                 // a face may be crossed by a few different triangles (other pentagon splits)
-                if (std::count(usedFaces.begin(), usedFaces.end(), face) >= 4) continue;
-                usedFaces.push_back(face);
+                if (++crossings[face] > 4) continue;
                 std::array<int, 5> v, e;
                 Pentagon(t, k, v, e);
                 for (int i = 0; i < 5; ++i) {
@@ -679,6 +682,7 @@ private:
                     next.face = face;
                     next.option = i;
                     next.parent = int(head);
+                    next.depth = t.depth + 1;
                     moves.push_back(next);
                 }
             }
