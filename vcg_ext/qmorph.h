@@ -286,6 +286,7 @@ private:
                 res.ops.splits += st.splits; res.ops.failures += st.failures; res.ops.pairedTriangles += st.pairedTriangles;
                 res.ops.doublets += st.doublets; res.ops.iterations += st.iterations;
                 res.ops.valenceTurns += st.valenceTurns;
+                res.ops.seams += st.seams;
             }
             // write back: vertex ids (global, or new), positions of moved interior nodes
             std::vector<int> outId(mm.VertexCount(), 0);

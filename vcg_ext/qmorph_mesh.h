@@ -467,6 +467,51 @@ public:
         return ReplaceRegion({heNext[h], hePrev[h], heNext[t], hePrev[t]}, {heFace[h], heFace[t]}, {}, {{0, 1, 2, 3}}, level);
     }
 
+    // Collapses the edge of h = x->y between two triangles (x y p) and (y x q): both triangles
+    // vanish, y joins x (moved to `at`), the two other sides of each triangle become one edge.
+    // False (nothing changed) when y is on the boundary, a side is a boundary edge, or the link
+    // condition fails (x and y share a neighbour besides p and q: not a 2-manifold afterwards).
+    bool CollapseEdge(int h, const P3 &at)
+    {
+        const int t = heTwin[h];
+        if (t < 0 || !IsTri(heFace[h]) || !IsTri(heFace[t])) return false;
+        const int x = Org(h), y = Dst(h), p = Org(hePrev[h]), q = Org(hePrev[t]);
+        const int h1 = heNext[h], h2 = hePrev[h], t1 = heNext[t], t2 = hePrev[t];
+        if (p == q || OnBoundary(y) || heTwin[h1] < 0 || heTwin[h2] < 0 || heTwin[t1] < 0 || heTwin[t2] < 0) return false;
+        std::vector<int> outX, outY, nx;
+        ForEachOutgoing(x, [&](int g) {
+            outX.push_back(g);
+            nx.push_back(vertKey[Dst(g)]);
+            if (heTwin[hePrev[g]] < 0) nx.push_back(vertKey[Org(hePrev[g])]);
+        });
+        ForEachOutgoing(y, [&](int g) { outY.push_back(g); });
+        int common = 0;
+        for (int g : outY) {
+            int k = vertKey[Dst(g)];
+            if (k != vertKey[x] && std::find(nx.begin(), nx.end(), k) != nx.end()) ++common;
+        }
+        if (common != 2) return false;
+        const int f1 = heFace[h], f2 = heFace[t];
+        const int pOut = heTwin[h1], qOut = heTwin[t1];  // p->y (becomes p->x) and q->x
+        for (int g : outY) heVert[g] = x;
+        Link(heTwin[h1], heTwin[h2]);
+        Link(heTwin[t1], heTwin[t2]);
+        for (int g : {h, h1, h2, t, t1, t2}) heFace[g] = -1;
+        faceSize[f1] = faceSize[f2] = 0;
+        vertAlive[y] = 0;
+        vertHe[y] = -1;
+        pos[x] = at;
+        vertHe[x] = -1;
+        for (int g : outX)
+            if (heFace[g] >= 0) { SetVertexHe(x, g); break; }
+        if (vertHe[x] < 0)
+            for (int g : outY)
+                if (heFace[g] >= 0) { SetVertexHe(x, g); break; }
+        SetVertexHe(p, pOut);
+        SetVertexHe(q, qOut);
+        return true;
+    }
+
     // Removes a valence-2 interior node shared by two quads (a "doublet"): the quads become one.
     bool DissolveDoublet(int v)
     {

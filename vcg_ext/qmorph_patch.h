@@ -37,13 +37,15 @@ struct PatchParams {
     double minQuadJacobian = 0.05;      // a quad is formed only when its scaled Jacobian exceeds this
     double pairMinJacobian = 0.3;       // leftover triangle pairs are merged above this quality
     double migrationMinJacobian = 0.02; // quads made while bringing distant triangles together
+    bool seams = true;                  // Owen's seam away from the initial front
+    double seamAngle = M_PI / 6;        // front edges meeting at a smaller angle are sewn together
     int finalSmoothing = 5;             // tangent-plane smoothing sweeps at the end
     bool smoothing = true;              // local smoothing after each quad + final sweeps
 };
 
 struct PatchStats {
     int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
-    int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0;
+    int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0, seams = 0;
 };
 
 class PatchMesher
@@ -58,7 +60,8 @@ public:
         int n = 0;
         for (int h = 0; h < m.HalfEdgeCount(); ++h)
             if (m.HeAlive(h)) { sum += m.Length(h); ++n; }
-        minLength = n ? 0.02 * sum / n : 0;
+        meanLength = n ? sum / n : 0;
+        minLength = 0.02 * meanLength;
     }
 
     PatchStats Run()
@@ -80,7 +83,8 @@ public:
                 if (FrontQueue::Rank(state) != e.rank || level != e.level) { queue.Push(h, state, level); continue; }
                 if (h < int(failedAt.size()) && failedAt[h] == successes) continue;
                 int len = front.LoopLength(h, 6);
-                bool ok = (len > 0 && CloseSmallLoop(h, len)) || (len != 3 && FormQuad(h, state));
+                bool ok = (len < 0 && p.seams && Seam(h)) || (len > 0 && CloseSmallLoop(h, len)) ||
+                          (len != 3 && FormQuad(h, state));
                 if (ok) ++successes;
                 else {
                     if (int(failedAt.size()) < m.HalfEdgeCount()) failedAt.resize(m.HalfEdgeCount(), -1);
@@ -116,7 +120,8 @@ private:
     int successes = 0;
 
     int vertexCap;
-    double minLength = 0;  // no split makes edges shorter than this (2% of the mean input edge)
+    double meanLength = 0;  // mean input edge length of the patch
+    double minLength = 0;   // no split makes edges shorter than this (2% of the mean input edge)
 
     // Intrinsic Delaunay flips of the near-flat interior edges next to thin triangles, before the
     // front starts: slivers (from splitting) make poor side edges. Well-shaped triangulations
@@ -425,25 +430,95 @@ private:
         return all;
     }
 
-    // Removing inner nodes must not flatten the surface: each must lie within a fifth of the
-    // shortest side from the plane of the new polygon (least-squares normal of its corners).
+    // Removing inner nodes must not flatten the surface: each removed node must lie close to the
+    // new polygon (its fan of triangles from the first corner; for a quad, the better of its two
+    // diagonals), within a fifth of the polygon's shortest side and a tenth of the mean input edge.
     bool InnerNodesNearQuad(const std::vector<int> &inner, const std::vector<int> &corners) const
     {
         if (inner.empty()) return true;
-        P3 c(0, 0, 0), n(0, 0, 0);
-        for (int v : corners) c += m.pos[v];
-        c /= double(corners.size());
         double shortest = 1e300;
-        for (size_t k = 0; k < corners.size(); ++k) {
-            const P3 &a = m.pos[corners[k]], &b = m.pos[corners[(k + 1) % corners.size()]];
-            n += a ^ b;
-            shortest = std::min(shortest, (b - a).Norm());
+        for (size_t k = 0; k < corners.size(); ++k)
+            shortest = std::min(shortest, (m.pos[corners[(k + 1) % corners.size()]] - m.pos[corners[k]]).Norm());
+        const double tolerance = std::min(0.2 * shortest, 0.1 * meanLength);
+        auto worstDistance = [&](size_t first) {  // fan from corner `first`
+            double worst = 0;
+            for (int v : inner) {
+                double best = 1e300;
+                for (size_t k = 1; k + 1 < corners.size(); ++k)
+                    best = std::min(best, PointTriangleDistance(m.pos[v], m.pos[corners[first]],
+                                                                m.pos[corners[(first + k) % corners.size()]],
+                                                                m.pos[corners[(first + k + 1) % corners.size()]]));
+                worst = std::max(worst, best);
+            }
+            return worst;
+        };
+        double d = worstDistance(0);
+        if (corners.size() == 4) d = std::min(d, worstDistance(1));
+        return d <= tolerance;
+    }
+
+    static double PointTriangleDistance(const P3 &p, const P3 &a, const P3 &b, const P3 &c)
+    {
+        P3 n = (b - a) ^ (c - a);
+        double nn = n.SquaredNorm();
+        if (nn > 0) {  // inside the prism over the triangle: distance to the plane
+            P3 q = p - n * (((p - a) * n) / nn);
+            if (((b - a) ^ (q - a)) * n >= 0 && ((c - b) ^ (q - b)) * n >= 0 && ((a - c) ^ (q - c)) * n >= 0) return (p - q).Norm();
         }
-        double l = n.Norm();
-        if (!(l > 0)) return false;
-        n /= l;
-        for (int v : inner)
-            if (std::fabs((m.pos[v] - c) * n) > 0.2 * shortest) return false;
+        auto segment = [&](const P3 &x, const P3 &y) {
+            P3 e = y - x;
+            double t = e.SquaredNorm() > 0 ? std::max(0.0, std::min(1.0, ((p - x) * e) / e.SquaredNorm())) : 0.0;
+            return (p - (x + e * t)).Norm();
+        };
+        return std::min({segment(a, b), segment(b, c), segment(c, a)});
+    }
+
+    // ---- seam ------------------------------------------------------------------------------------
+    // Owen's seam: front edges A->B and B->C meeting at a very small angle, with the one thin
+    // triangle (A B C) between them, are closed by joining A and C (the edge A-C collapses). Only
+    // away from the initial front (both edges have a quad on their other side): on the initial
+    // front the paper leaves a triangle instead.
+    bool Seam(int h)
+    {
+        const int n = front.NextFront(h);
+        if (n < 0 || m.heNext[h] != n || m.heTwin[h] < 0 || m.heTwin[n] < 0) return false;
+        if (front.RightAngle(h) >= p.seamAngle) return false;
+        const int e = m.heNext[n];  // C -> A
+        const int a = m.Org(h), c = m.Dst(n);
+        if (m.Dst(e) != a || (m.vertFixed[a] && m.vertFixed[c])) return false;
+        const int keep = m.vertFixed[c] ? c : a, gone = keep == a ? c : a;
+        const int h0 = keep == a ? m.heTwin[e] : e;  // keep -> gone
+        if (h0 < 0 || !m.IsTri(m.heFace[h0]) || !m.IsTri(m.heFace[m.heTwin[h0]])) return false;
+        P3 at = m.pos[keep];
+        if (!m.vertFixed[keep]) {
+            at = (m.pos[a] + m.pos[c]) * 0.5;
+            at = proj.Project(at, home[keep]);
+        }
+        // joining must not cut the surface: both nodes move little out of their tangent plane
+        const double limit = 0.1 * std::min(m.Length(h), m.Length(n));
+        if (std::fabs((m.pos[gone] - at) * m.VertexNormal(gone)) > limit ||
+            std::fabs((m.pos[keep] - at) * m.VertexNormal(keep)) > limit)
+            return false;
+        // the faces that stay around both nodes must stay valid with the joined node at `at`
+        const int dead1 = m.heFace[h0], dead2 = m.heFace[m.heTwin[h0]];
+        std::vector<int> faces;
+        for (int v : {keep, gone})
+            m.ForEachOutgoing(v, [&](int g) {
+                int f = m.heFace[g];
+                if (f != dead1 && f != dead2 && std::find(faces.begin(), faces.end(), f) == faces.end()) faces.push_back(f);
+            });
+        std::vector<P3> normals;
+        for (int f : faces) normals.push_back(m.FaceNormal(f).Normalize());
+        const P3 oldKeep = m.pos[keep], oldGone = m.pos[gone];
+        m.pos[keep] = m.pos[gone] = at;
+        bool valid = true;
+        for (size_t i = 0; i < faces.size() && valid; ++i) valid = FaceQualityAt(faces[i], normals[i]) > 0.05;
+        m.pos[keep] = oldKeep;
+        m.pos[gone] = oldGone;
+        if (!valid || !m.CollapseEdge(h0, at)) return false;
+        ++stats.seams;
+        AfterNewFaces({}, {keep});
+        PushAround(keep);
         return true;
     }
 
