@@ -96,48 +96,51 @@ public:
         return false;
     }
 
-    int NextFront(int h) const
+    // The next front edge of the loop after h, walking the unmeshed fan at h's destination
+    // clockwise (-1 when the walk reaches the boundary); `angle` gets the corner angles swept.
+    int NextFront(int h, double *angle = nullptr) const
     {
+        double a = 0;
         int g = m.heNext[h];
-        for (int guard = 0; guard < 256 && !IsFront(g); ++guard) {
-            if (m.heTwin[g] < 0) return -1;
+        int found = -1;
+        for (int guard = 0; guard < 256; ++guard) {
+            if (angle) a += m.CornerAngle(g);
+            if (IsFront(g)) { found = g; break; }
+            if (m.heTwin[g] < 0) break;
             g = m.heNext[m.heTwin[g]];
         }
-        return IsFront(g) ? g : -1;
+        if (angle) *angle = a;
+        return found;
     }
 
-    int PrevFront(int h) const
+    // The previous front edge, walking the fan at h's origin counter-clockwise.
+    int PrevFront(int h, double *angle = nullptr) const
     {
-        int e = m.hePrev[h];
-        for (int guard = 0; guard < 256 && !IsFront(e); ++guard) {
-            if (m.heTwin[e] < 0) return -1;
-            e = m.hePrev[m.heTwin[e]];
+        double a = 0;
+        int g = h;
+        int found = -1;
+        for (int guard = 0; guard < 256; ++guard) {
+            if (angle) a += m.CornerAngle(g);
+            int e = m.hePrev[g];
+            if (IsFront(e)) { found = e; break; }
+            if (m.heTwin[e] < 0) break;
+            g = m.heTwin[e];
         }
-        return IsFront(e) ? e : -1;
+        if (angle) *angle = a;
+        return found;
     }
 
     // Front angles at both ends (sum of unmeshed corner angles).
     double LeftAngle(int h) const
     {
         double a = 0;
-        int g = h;
-        for (int guard = 0; guard < 256; ++guard) {
-            a += m.CornerAngle(g);
-            int e = m.hePrev[g];
-            if (IsFront(e) || m.heTwin[e] < 0) return a;
-            g = m.heTwin[e];
-        }
+        PrevFront(h, &a);
         return a;
     }
     double RightAngle(int h) const
     {
         double a = 0;
-        int g = m.heNext[h];
-        for (int guard = 0; guard < 256; ++guard) {
-            a += m.CornerAngle(g);
-            if (IsFront(g) || m.heTwin[g] < 0) return a;
-            g = m.heNext[m.heTwin[g]];
-        }
+        NextFront(h, &a);
         return a;
     }
 

@@ -480,9 +480,9 @@ private:
     // front the paper leaves a triangle instead.
     bool Seam(int h)
     {
-        const int n = front.NextFront(h);
-        if (n < 0 || m.heNext[h] != n || m.heTwin[h] < 0 || m.heTwin[n] < 0) return false;
-        if (front.RightAngle(h) >= p.seamAngle) return false;
+        double angle = 0;
+        const int n = front.NextFront(h, &angle);
+        if (n < 0 || m.heNext[h] != n || m.heTwin[h] < 0 || m.heTwin[n] < 0 || angle >= p.seamAngle) return false;
         const int e = m.heNext[n];  // C -> A
         const int a = m.Org(h), c = m.Dst(n);
         if (m.Dst(e) != a || (m.vertFixed[a] && m.vertFixed[c])) return false;
