@@ -26,9 +26,10 @@ QString QMorphFrontPlugin::qmorphInfo()
            "advancing front quad meshing\"</b>, IJNME 44:1317-1340, 1999.";
 }
 
-void QMorphFrontPlugin::initQMorphParameters(MeshDocument &, RichParameterList &par)
+void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList &par)
 {
     QMorphCMeshO::Params d;
+    const float diag = md.mm() ? md.mm()->cm.bbox.Diag() : 1.f;
     par.addParam(RichBool("TangentSmoothing", d.smoothing, "Tangent-plane smoothing",
                           "Smooth new nodes after each quad and the whole quad mesh at the end, moving nodes only in "
                           "their tangent plane and projecting them back onto the input surface of their patch "
@@ -39,6 +40,13 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &, RichParameterList &
                            "Edges whose two faces' normals differ by more than this angle are cut like front edges "
                            "(they are not selected), so no quad folds over a sharp crease inside a patch (a VSA region "
                            "may hold creases up to twice its threshold angle). 180 turns it off. In (0, 180]."));
+    par.addParam(RichAbsPerc("TargetEdgeLength", float(d.targetEdgeLength), 0.f, diag, "Re-mesh first: target edge length",
+                             "Optional, beyond the paper: isotropic re-meshing of each patch before Q-Morph (split, "
+                             "collapse, flip, tangential relaxation on the input surface), so the quads start from "
+                             "well-shaped triangles of this size. Front edges are cut into pieces of about this length "
+                             "and stay chains of selected edges. 0: off (the input triangles are used as they are)."));
+    par.addParam(RichInt("RemeshIterations", d.remeshIterations, "Re-meshing iterations",
+                         "Rounds of split, collapse, flip and relaxation when re-meshing is on (1..50)."));
     par.addParam(RichBool("FrontEdgesLayer", true, "Front edges layer",
                           "Refresh (or create) the edge-only layer '<mesh>_front_edges' showing the selected front "
                           "edges: MeshLab 2020.09 does not draw selected face-edges."));
@@ -55,10 +63,13 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     p.smoothing = par.getBool("TangentSmoothing");
     p.smoothingIterations = par.getInt("SmoothingIterations");
     p.creaseAngleDeg = par.getFloat("CreaseAngle");
+    p.targetEdgeLength = par.getAbsPerc("TargetEdgeLength");
+    p.remeshIterations = par.getInt("RemeshIterations");
     const QString exportPath = par.getSaveFileName("ExportPath").trimmed();
     std::string bad = p.Validate();
     if (!bad.empty()) return fail(name, QString::fromStdString(bad));
     bad = QMorphCMeshO::CheckInput(mm.cm);
+    if (bad.empty()) bad = QMorphCMeshO::CheckRemeshSize(mm.cm, p);
     if (!bad.empty()) return fail(name, QString::fromStdString(bad));
     if (!exportPath.isEmpty()) {
         QString suffix = QFileInfo(exportPath).suffix().toLower();
@@ -93,6 +104,9 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
         r.patches, r.patchesWithoutFront, r.initialFrontEdges, r.creaseEdges, r.quads, r.triangles, 100 * q.quadAreaFraction,
         r.ops.quadsFormed, r.ops.templates, r.ops.seams, r.ops.pairedTriangles, r.ops.doublets, r.ops.valenceTurns, r.ops.swaps, r.ops.splits, r.seconds,
         qUtf8Printable(layerNote));
+    if (p.targetEdgeLength > 0)
+        Log("Q-Morph re-meshing to edge length %g: %d front edges cut into pieces; %d splits, %d collapses, %d flips",
+            p.targetEdgeLength, r.frontEdgesSubdivided, r.remesh.splits, r.remesh.collapses, r.remesh.flips);
     Log("Q-Morph quality: scaled Jacobian min %.3f mean %.3f, %d quads below 0.3, %d inverted; irregular vertices "
         "%d of %d (%.1f%%)",
         q.minJacobian, q.meanJacobian, q.quadsBelow03, q.invertedQuads, q.irregularVertices, q.interiorAllQuadVertices,

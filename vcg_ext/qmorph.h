@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <numeric>
@@ -27,6 +29,7 @@
 
 #include "mesh_checks.h"
 #include "qmorph_patch.h"
+#include "qmorph_remesh.h"
 #include "quad_quality.h"
 
 namespace vcg_ext {
@@ -47,12 +50,16 @@ public:
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
         double creaseAngleDeg = 60;        // edges this sharp (angle between face normals) are front
                                            // too, so no quad folds over a crease; >= 180: off
+        double targetEdgeLength = 0;       // > 0: isotropic re-meshing of each patch first (absolute units)
+        int remeshIterations = 5;          // split/collapse/flip/relax rounds of that re-meshing
 
         std::string Validate() const
         {
             if (smoothingIterations < 0 || smoothingIterations > 100) return "smoothing iterations must be in 0..100";
             if (!(creaseAngleDeg > 0 && creaseAngleDeg <= 180)) return "the crease angle must be in (0, 180] degrees";
             if (!(closedAngleDeg > 30 && closedAngleDeg < 180)) return "the closed-end angle must be in (30, 180) degrees";
+            if (!(targetEdgeLength >= 0 && std::isfinite(targetEdgeLength))) return "the target edge length must be a finite number >= 0 (0: no re-meshing)";
+            if (remeshIterations < 1 || remeshIterations > 50) return "re-meshing iterations must be in 1..50";
             return "";
         }
     };
@@ -61,6 +68,8 @@ public:
         std::string error;
         int initialFrontEdges = 0, patches = 0, patchesWithoutFront = 0;
         int creaseEdges = 0;  // sharp edges that were not selected but cut the patches too
+        int frontEdgesSubdivided = 0;  // front edges cut into pieces of the target length (re-meshing on)
+        qmorph::PatchRemesher::Stats remesh;
         int quads = 0, triangles = 0;
         qmorph::PatchStats ops;
         QuadQualityReport quality;
@@ -81,6 +90,22 @@ public:
         return "";
     }
 
+    // Bounded memory: a target edge length far below the mesh's scale would make a huge mesh.
+    static std::string CheckRemeshSize(const MeshType &m, const Params &params)
+    {
+        if (params.targetEdgeLength <= 0) return "";
+        double area = 0;
+        for (const FaceType &f : m.face)
+            if (!f.IsD()) area += vcg::DoubleArea(f) / 2;
+        const double L = params.targetEdgeLength;
+        const double estimate = area / (std::sqrt(3.0) / 4 * L * L);
+        const double cap = 2e7;
+        if (estimate > cap)
+            return "the target edge length " + std::to_string(L) + " is too small for this mesh: re-meshing would make about " +
+                   std::to_string(long(estimate)) + " triangles (at most " + std::to_string(long(cap)) + ")";
+        return "";
+    }
+
     static int CountSelectedEdges(const MeshType &m)
     {
         int n = 0;
@@ -96,6 +121,7 @@ public:
         Result res;
         res.error = params.Validate();
         if (res.error.empty()) res.error = CheckInput(m);
+        if (res.error.empty()) res.error = CheckRemeshSize(m, params);
         if (!res.error.empty()) return res;
 
         vcg::tri::RequireFFAdjacency(m);  // to read the quads back for the quality report
@@ -222,7 +248,6 @@ private:
         std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return patchOf[a] < patchOf[b]; });
 
         const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
-        std::vector<P3> outPoints;              // appended new vertices
         std::vector<int> vertexNewPos(m.vert.size(), -2);  // -2 untouched, -1 removed, else moved
         std::vector<P3> movedTo;
         std::vector<std::array<int, 5>> outFaces;  // global vertex ids (negative: new vertex -k-1), size in [4]
@@ -279,6 +304,13 @@ private:
             mm.SetKeys(globalOf);
             SurfaceProjector surface;
             surface.Build(pts, ltri);
+            std::unordered_map<int, int> sharedOfLocal;  // front subdivision node -> its output id
+            if (hasFront && par.targetEdgeLength > 0) {
+                SubdivideFront(mm, globalOf, home, sharedOfLocal, res);
+                qmorph::PatchRemesher remesher(mm, surface, home, par.targetEdgeLength);
+                qmorph::PatchRemesher::Stats rs = remesher.Run(par.remeshIterations);
+                res.remesh.splits += rs.splits; res.remesh.collapses += rs.collapses; res.remesh.flips += rs.flips;
+            }
             if (hasFront) {
                 qmorph::PatchMesher mesher(mm, surface, home, pp);
                 qmorph::PatchStats st = mesher.Run();
@@ -292,7 +324,10 @@ private:
             std::vector<int> outId(mm.VertexCount(), 0);
             for (int v = 0; v < mm.VertexCount(); ++v) {
                 if (!mm.vertAlive[v]) continue;
-                if (v < int(globalOf.size())) {
+                auto shared = sharedOfLocal.find(v);
+                if (shared != sharedOfLocal.end()) {
+                    outId[v] = shared->second;
+                } else if (v < int(globalOf.size())) {
                     int g = globalOf[v];
                     outId[v] = g;
                     used[g] = 1;
@@ -301,8 +336,8 @@ private:
                         movedTo.push_back(mm.pos[v]);
                     }
                 } else {
-                    outPoints.push_back(mm.pos[v]);
-                    outId[v] = -int(outPoints.size());
+                    newPoints.push_back(mm.pos[v]);
+                    outId[v] = -int(newPoints.size());
                 }
             }
             for (int f = 0; f < mm.FaceCount(); ++f) {
@@ -319,8 +354,59 @@ private:
             s = e;
         }
         Progress(99, "Q-Morph: writing the quad mesh");
-        WriteBack(outPoints, vertexNewPos, movedTo, outFaces, outQuality, used, hasQuality);
+        WriteBack(newPoints, vertexNewPos, movedTo, outFaces, outQuality, used, hasQuality);
         res.quality = QuadQuality::Measure(QuadQuality::FromFauxMesh(m));
+    }
+
+    // Front edges cut into pieces of about the target length, with points that depend only on the
+    // edge's input vertices: both patches on an edge make the same points, written once.
+    std::vector<P3> newPoints;                       // vertices added to the mesh (output id -k-1: newPoints[k])
+    std::unordered_map<uint64_t, int> sharedOfEdge;  // edge key -> first of its points in sharedOut
+    std::vector<int> sharedOut;                      // output id (negative: new vertex) per point
+    std::vector<std::pair<int, int>> frontChains;    // selected sub-edges, as output ids
+
+    void SubdivideFront(qmorph::MixedMesh &mm, const std::vector<int> &globalOf, std::vector<int> &home,
+                        std::unordered_map<int, int> &sharedOfLocal, Result &res)
+    {
+        const double L = par.targetEdgeLength;
+        const int boundaryCount = mm.HalfEdgeCount();
+        std::vector<int> keys(globalOf.begin(), globalOf.end());
+        for (int h = 0; h < boundaryCount; ++h) {
+            if (!mm.HeAlive(h) || mm.heTwin[h] >= 0 || mm.Org(h) >= int(globalOf.size()) || mm.Dst(h) >= int(globalOf.size())) continue;
+            const int ga = globalOf[mm.Org(h)], gb = globalOf[mm.Dst(h)];
+            const int lo = std::min(ga, gb), hi = std::max(ga, gb);
+            const P3 plo = P3::Construct(m.vert[lo].cP()), phi = P3::Construct(m.vert[hi].cP());
+            const int n = qmorph::PatchRemesher::PiecesFor((phi - plo).Norm(), L);
+            if (n < 2) continue;
+            const uint64_t key = Key(lo, hi);
+            auto it = sharedOfEdge.find(key);
+            if (it == sharedOfEdge.end()) {
+                it = sharedOfEdge.emplace(key, int(sharedOut.size())).first;
+                std::vector<int> chain{lo};
+                for (int k = 1; k < n; ++k) {
+                    newPoints.push_back(plo + (phi - plo) * (double(k) / n));
+                    sharedOut.push_back(-int(newPoints.size()));
+                    chain.push_back(sharedOut.back());
+                }
+                chain.push_back(hi);
+                if (selectedPairs.count(key))
+                    for (size_t k = 0; k + 1 < chain.size(); ++k) frontChains.push_back({chain[k], chain[k + 1]});
+                ++res.frontEdgesSubdivided;
+            }
+            std::vector<P3> points;  // from the half-edge's origin to its end
+            for (int k = 1; k < n; ++k) points.push_back(plo + (phi - plo) * (double(ga == lo ? k : n - k) / n));
+            std::vector<int> made = qmorph::PatchRemesher::SubdivideBoundaryEdge(mm, home, h, points);
+            for (int k = 0; k < n - 1; ++k) {
+                const int point = it->second + (ga == lo ? k : n - 2 - k);
+                sharedOfLocal[made[k]] = sharedOut[point];
+                keys.resize(mm.VertexCount(), 0);
+                keys[made[k]] = INT_MIN / 2 + point;  // copies of one point (both sides of a slit) share it
+            }
+        }
+        keys.resize(mm.VertexCount(), 0);
+        for (int v = int(globalOf.size()); v < mm.VertexCount(); ++v)
+            if (!sharedOfLocal.count(v)) keys[v] = mm.vertKey[v];
+        mm.SetKeys(keys);
     }
 
     // Replaces the faces of m by the new polygons (quads as faux pairs), front edges selected.
@@ -330,13 +416,16 @@ private:
     {
         // The selection is kept as vertex pairs: flips do not carry per-edge flags, and the
         // initial front edges survive unchanged, so the pairs are still edges.
-        const std::unordered_set<uint64_t> &frontPairs = selectedPairs;
+        const int firstNew = int(m.vert.size());
+        auto resolve = [&](int id) { return id >= 0 ? id : firstNew + (-id - 1); };
+        std::unordered_set<uint64_t> frontPairs = selectedPairs;
+        for (const auto &e : sharedOfEdge) frontPairs.erase(e.first);  // cut into pieces: no longer an edge
+        for (const auto &e : frontChains) frontPairs.insert(Key(resolve(e.first), resolve(e.second)));
 
         for (size_t v = 0; v < m.vert.size(); ++v) {
             if (m.vert[v].IsD()) continue;
             if (vertexNewPos[v] >= 0) m.vert[v].P() = CoordType::Construct(movedTo[vertexNewPos[v]]);
         }
-        const int firstNew = int(m.vert.size());
         if (!outPoints.empty()) {
             auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, outPoints.size());
             for (size_t i = 0; i < outPoints.size(); ++i, ++vi) vi->P() = CoordType::Construct(outPoints[i]);
@@ -345,7 +434,6 @@ private:
             if (!f.IsD()) vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
         size_t triCount = 0;
         for (auto &of : outFaces) triCount += of[0] == 4 ? 2 : 1;
-        auto resolve = [&](int id) { return id >= 0 ? id : firstNew + (-id - 1); };
         // polygon sides and chosen diagonals, so a quad is never split along an edge that exists elsewhere
         std::unordered_set<uint64_t> sides;
         for (const auto &of : outFaces)

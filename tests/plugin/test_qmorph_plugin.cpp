@@ -90,6 +90,31 @@ TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
     EXPECT_EQ(vertices - int(uses.size()) + int(faces.size()), 2) << "a closed genus-0 quad mesh";
 }
 
+TEST(QMorphPlugin, RemeshingFirstCutsTheFrontIntoChainsOfTheTargetLength)
+{
+    PluginHarness h;
+    MeshModel *mm = AddSelectedCube(h);  // side 2, cube edges of 4 mesh edges of length 0.5
+    RichParameterList par = h.Defaults(kQMorph);
+    par.setValue("TargetEdgeLength", AbsPercValue(0.25f));
+    FilterRun r = h.Apply(kQMorph, par);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.Logged("Q-Morph re-meshing to edge length 0.25: 48 front edges cut into pieces"));
+    EXPECT_TRUE(r.Logged(", 0 triangles left"));
+    EXPECT_TRUE(r.Logged("0 inverted"));
+    EXPECT_EQ(CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS), 2 * 12 * 8) << "each front edge became two selected edges";
+    // the selected edges lie on the cube's edges (two coordinates at +-1)
+    for (auto &f : mm->cm.face)
+        for (int k = 0; k < 3; ++k)
+            if (f.IsFaceEdgeS(k))
+                for (int end = 0; end < 2; ++end) {
+                    const vcg::Point3f &q = f.cP((k + end) % 3);
+                    int onFace = 0;
+                    for (int c = 0; c < 3; ++c) onFace += std::fabs(std::fabs(q[c]) - 1.f) < 1e-5f;
+                    EXPECT_GE(onFace, 2) << "a selected edge left the cube's edges";
+                }
+    EXPECT_NEAR(mm->cm.fn / 2, 6 * 64, 6 * 64 * 0.2) << "about (2 / 0.25)^2 quads per side";
+}
+
 TEST(QMorphPlugin, OpenMeshUsesItsBoundaryAsFront)
 {
     PluginHarness h;
@@ -147,6 +172,18 @@ TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
         ExpectRefused(h, par, ".obj, .off or .ply");
         par.setValue("ExportPath", FileValue("/no/such/folder/quads.obj"));
         ExpectRefused(h, par, "cannot write");
+    }
+    {
+        PluginHarness h;
+        AddSelectedCube(h);
+        RichParameterList par = h.Defaults(kQMorph);
+        par.setValue("TargetEdgeLength", AbsPercValue(-0.1f));
+        ExpectRefused(h, par, "target edge length must be");
+        par.setValue("TargetEdgeLength", AbsPercValue(1e-5f));
+        ExpectRefused(h, par, "too small for this mesh");
+        par.setValue("TargetEdgeLength", AbsPercValue(0.1f));
+        par.setValue("RemeshIterations", IntValue(0));
+        ExpectRefused(h, par, "re-meshing iterations");
     }
     {
         PluginHarness h;

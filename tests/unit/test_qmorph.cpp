@@ -32,6 +32,38 @@ int Euler(const TMesh &m)
     return c.vertices - int(AllEdges(m).size()) + c.faces;
 }
 
+// With re-meshing, each selected input edge may be cut into pieces: the selected output edges must
+// lie on the selected input edges and cover each of them exactly (lengths add up), nothing else.
+void ExpectFrontIsChainsOfSelectedEdges(const std::set<PosEdge> &input, const TMesh &m)
+{
+    auto point = [](const PosEdge &e, int k) { return vcg::Point3d(e[3 * k], e[3 * k + 1], e[3 * k + 2]); };
+    auto onSegment = [](const vcg::Point3d &p, const vcg::Point3d &a, const vcg::Point3d &b) {
+        vcg::Point3d d = b - a;
+        double t = ((p - a) * d) / d.SquaredNorm();
+        return t > -1e-6 && t < 1 + 1e-6 && (a + d * t - p).Norm() < 1e-5 * d.Norm();
+    };
+    std::map<PosEdge, double> covered;
+    int stray = 0;
+    for (const PosEdge &e : SelectedEdges(m)) {
+        const vcg::Point3d a = point(e, 0), b = point(e, 1);
+        bool found = false;
+        for (const PosEdge &in : input)
+            if (onSegment(a, point(in, 0), point(in, 1)) && onSegment(b, point(in, 0), point(in, 1))) {
+                covered[in] += (b - a).Norm();
+                found = true;
+                break;
+            }
+        stray += !found;
+    }
+    EXPECT_EQ(stray, 0) << "selected output edges off the initial front";
+    int uncovered = 0;
+    for (const PosEdge &in : input) {
+        const double len = (point(in, 1) - point(in, 0)).Norm();
+        uncovered += std::fabs(covered[in] - len) > 1e-4 * len;
+    }
+    EXPECT_EQ(uncovered, 0) << "initial front edges not exactly covered by a chain of selected output edges";
+}
+
 // Runs Q-Morph on `m` and checks what must hold for any input: no error, no inverted quad, a
 // clean 2-manifold (closed when the input was), the front unchanged and still the only
 // selection, the Euler characteristic kept. Returns the result for case-specific checks.
@@ -63,11 +95,15 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
     if (r.quads) {
         EXPECT_GT(r.quality.minJacobian, 0.0) << Describe(r);
     }
-    EXPECT_EQ(SelectedEdges(m), selected) << "the selection must be exactly the initial front";
-    const std::set<PosEdge> edges = AllEdges(m);
-    int lost = 0;
-    for (const PosEdge &e : front) lost += edges.count(e) == 0;
-    EXPECT_EQ(lost, 0) << "initial front edges that are no longer edges";
+    if (p.targetEdgeLength > 0) {
+        ExpectFrontIsChainsOfSelectedEdges(selected, m);
+    } else {
+        EXPECT_EQ(SelectedEdges(m), selected) << "the selection must be exactly the initial front";
+        const std::set<PosEdge> edges = AllEdges(m);
+        int lost = 0;
+        for (const PosEdge &e : front) lost += edges.count(e) == 0;
+        EXPECT_EQ(lost, 0) << "initial front edges that are no longer edges";
+    }
     vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
     vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
     EXPECT_EQ(EulerCharacteristic(pm), euler) << "the polygon mesh changed topology";
@@ -245,6 +281,52 @@ TEST(QMorph, ElephantWithJaggyRegionFronts)
     EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag()) << "removed inner nodes must not flatten features";
 }
 
+// Mean length of the polygon sides (quad diagonals excluded).
+double MeanSideLength(const TMesh &m)
+{
+    double sum = 0;
+    int n = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (!f.IsF(k)) { sum += (f.cP(k) - f.cP((k + 1) % 3)).Norm(); ++n; }
+    return n ? sum / n : 0;
+}
+
+TEST(QMorph, CubeRemeshedToATargetLengthKeepsItsEdgesAsChains)
+{
+    TMesh m;
+    MakeCube(m, 3, 0.3f, 5);  // side 2, cube edges of 3 mesh edges
+    ASSERT_EQ(SelectCreases(m, 45), 12 * 3);
+    const double volume = Volume(m);
+    QM::Params p;
+    p.targetEdgeLength = 1.0 / 6;  // every mesh edge of a cube edge becomes 4 pieces
+    QM::Result r = RunAndCheckInvariants(m, p);
+    EXPECT_EQ(r.frontEdgesSubdivided, 12 * 3);
+    EXPECT_GT(r.remesh.splits, 6 * 18) << "the 18 triangles of a side become ~300";
+    EXPECT_EQ(r.triangles, 0) << Describe(r);
+    EXPECT_NEAR(r.quads, 6 * 144, 6 * 144 * 0.2) << "about (2 / L)^2 quads per side";
+    EXPECT_NEAR(MeanSideLength(m), 1.0 / 6, 0.2 / 6);
+    EXPECT_GT(r.quality.meanJacobian, 0.85) << Describe(r);
+    EXPECT_NEAR(Volume(m), volume, 1e-4 * volume) << "flat sides, fixed edges: the volume is exact";
+}
+
+TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/fandisk.off"));
+    ASSERT_GT(SelectCreases(m, 40), 100);
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    QM::Params p;
+    p.targetEdgeLength = 0.01 * input.bbox.Diag();
+    QM::Result r = RunAndCheckInvariants(m, p);
+    EXPECT_GT(r.frontEdgesSubdivided, 0);
+    EXPECT_GT(r.quality.quadAreaFraction, 0.98) << Describe(r);
+    EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
+    EXPECT_NEAR(MeanSideLength(m), p.targetEdgeLength, 0.25 * p.targetEdgeLength);
+    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+}
+
 TEST(QMorph, BadInputIsRefusedAndLeftUnchanged)
 {
     auto unchanged = [](TMesh &m, const std::string &expected, const QM::Params &p = QM::Params()) {
@@ -278,6 +360,11 @@ TEST(QMorph, BadInputIsRefusedAndLeftUnchanged)
     QM::Params p;
     p.smoothingIterations = -1;
     unchanged(ok, "smoothing iterations", p);
+    p = QM::Params();
+    p.targetEdgeLength = -1;
+    unchanged(ok, "target edge length", p);
+    p.targetEdgeLength = 1e-5;  // a unit grid in pieces of 1e-5: 1e10 triangles
+    unchanged(ok, "too small", p);
     TMesh empty;
     unchanged(empty, "empty");
 }

@@ -1,0 +1,210 @@
+// Optional isotropic re-meshing of one patch before Q-Morph, after Botsch & Kobbelt (2004): split
+// edges longer than 4/3 L, collapse edges shorter than 4/5 L, flip edges toward valence 6 (4 on
+// the boundary), relax nodes tangentially and project them back onto the patch's input surface.
+// Q-Morph then starts from well-shaped triangles of one size (the seed paper's own suggestion).
+//
+// The patch boundary is the initial front: it is never flipped, collapsed or moved. The caller
+// subdivides it first (SubdivideBoundaryEdge) with points that depend only on the edge's two input
+// vertices, so the two patches on either side of a front edge get the very same points and the
+// front curve stays a chain of output edges.
+#ifndef VCG_EXT_QMORPH_REMESH_H
+#define VCG_EXT_QMORPH_REMESH_H
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "qmorph_mesh.h"
+#include "surface_projector.h"
+
+namespace vcg_ext {
+namespace qmorph {
+
+class PatchRemesher
+{
+public:
+    // How many pieces a front edge of this length is cut into for target length L.
+    static int PiecesFor(double length, double L) { return L > 0 ? std::max(1, int(std::lround(length / L))) : 1; }
+
+    // Splits boundary half-edge h (from a to b) at the given points, in order from a to b. The new
+    // nodes are initial-front nodes (fixed). Returns them in order.
+    static std::vector<int> SubdivideBoundaryEdge(MixedMesh &m, std::vector<int> &home, int h, const std::vector<P3> &points)
+    {
+        std::vector<int> made;
+        for (const P3 &p : points) {
+            const int from = m.Org(h);
+            const int v = m.SplitEdge(h, p);  // h now ends at v
+            m.vertFixed[v] = 1;
+            home.resize(m.VertexCount(), 0);
+            home[v] = home[from];
+            made.push_back(v);
+            h = m.vertHe[v];  // the boundary half-edge v -> b (a boundary node keeps that one)
+        }
+        return made;
+    }
+
+    PatchRemesher(MixedMesh &mesh, const SurfaceProjector &surface, std::vector<int> &homeTriangle, double targetLength)
+        : m(mesh), proj(surface), home(homeTriangle), L(targetLength)
+    {
+        home.resize(m.VertexCount(), 0);
+    }
+
+    struct Stats { int splits = 0, collapses = 0, flips = 0; };
+
+    Stats Run(int iterations)
+    {
+        for (int it = 0; it < iterations; ++it) {
+            SplitLongEdges();
+            CollapseShortEdges();
+            FlipTowardValence();
+            for (int k = 0; k < 2; ++k) Relax();
+        }
+        return stats;
+    }
+
+private:
+    MixedMesh &m;
+    const SurfaceProjector &proj;
+    std::vector<int> &home;
+    const double L;
+    Stats stats;
+
+    bool Interior(int h) const
+    {
+        const int t = m.heTwin[h];
+        return t >= 0 && m.HeAlive(h) && !m.heInitial[h] && m.IsTri(m.heFace[h]) && m.IsTri(m.heFace[t]);
+    }
+
+    void SplitLongEdges()
+    {
+        const double hi2 = (4.0 / 3.0 * L) * (4.0 / 3.0 * L);
+        const int count = m.HalfEdgeCount();  // edges made by this pass are already short enough
+        for (int h = 0; h < count; ++h) {
+            if (!Interior(h) || m.heTwin[h] < h || m.Vec(h).SquaredNorm() <= hi2) continue;
+            const int from = m.Org(h);
+            const P3 mid = (m.pos[m.Org(h)] + m.pos[m.Dst(h)]) * 0.5;
+            const int v = m.SplitEdge(h, mid);
+            home.resize(m.VertexCount(), 0);
+            home[v] = home[from];
+            TryMove(v, proj.Project(mid, home[v]));
+            ++stats.splits;
+        }
+    }
+
+    void CollapseShortEdges()
+    {
+        const double lo2 = (0.8 * L) * (0.8 * L), hi = 4.0 / 3.0 * L;
+        for (int h = 0; h < m.HalfEdgeCount(); ++h) {
+            if (!Interior(h) || m.Vec(h).SquaredNorm() >= lo2) continue;
+            const int x = m.Org(h), y = m.Dst(h);
+            if (m.vertFixed[y]) continue;  // y joins x: only a free node goes (the twin has the other order)
+            P3 at = m.pos[x];
+            if (!m.vertFixed[x]) {
+                int hm = home[x];
+                at = proj.Project((m.pos[x] + m.pos[y]) * 0.5, hm);
+            }
+            // no edge of the joined node may become long, no face may fold
+            bool ok = true;
+            for (int v : {x, y})
+                m.ForEachOutgoing(v, [&](int g) { if ((m.pos[m.Dst(g)] - at).Norm() > hi && m.Dst(g) != x && m.Dst(g) != y) ok = false; });
+            if (!ok || !FacesStayValid({x, y}, {m.heFace[h], m.heFace[m.heTwin[h]]}, at)) continue;
+            if (m.CollapseEdge(h, at)) ++stats.collapses;
+        }
+    }
+
+    int TargetValence(int v) const { return m.OnBoundary(v) ? 4 : 6; }
+
+    void FlipTowardValence()
+    {
+        for (int h = 0; h < m.HalfEdgeCount(); ++h) {
+            if (!Interior(h) || m.heTwin[h] < h || !m.CanFlip(h)) continue;
+            const int t = m.heTwin[h];
+            const int a = m.Org(h), b = m.Dst(h), c = m.Org(m.hePrev[h]), d = m.Org(m.hePrev[t]);
+            auto dev = [&](int v, int delta) { return std::abs(m.Valence(v) + delta - TargetValence(v)); };
+            const int before = dev(a, 0) + dev(b, 0) + dev(c, 0) + dev(d, 0);
+            const int after = dev(a, -1) + dev(b, -1) + dev(c, 1) + dev(d, 1);
+            if (after < before) {
+                m.Flip(h);
+                ++stats.flips;
+            }
+        }
+    }
+
+    // Tangential relaxation toward the area-weighted centroid of the neighbouring triangles.
+    void Relax()
+    {
+        for (int v = 0; v < m.VertexCount(); ++v) {
+            if (!m.vertAlive[v] || m.vertFixed[v] || m.vertHe[v] < 0) continue;
+            P3 sum(0, 0, 0);
+            double area = 0;
+            m.ForEachOutgoing(v, [&](int g) {
+                const int f = m.heFace[g];
+                const double a = m.FaceNormal(f).Norm();
+                P3 c = (m.pos[m.Org(g)] + m.pos[m.Dst(g)] + m.pos[m.Org(m.hePrev[g])]) / 3.0;
+                sum += c * a;
+                area += a;
+            });
+            if (!(area > 0)) continue;
+            const P3 n = m.VertexNormal(v);
+            P3 move = sum / area - m.pos[v];
+            move -= n * (move * n);
+            TryMove(v, proj.Project(m.pos[v] + move, home[v]));
+        }
+    }
+
+    // Quality of a triangle against a reference unit normal: 1 equilateral, <= 0 folded.
+    double TriangleQuality(int f, const P3 &n) const
+    {
+        const int g = m.faceHe[f];
+        const P3 A = m.pos[m.Org(g)], B = m.pos[m.Dst(g)], C = m.pos[m.Org(m.hePrev[g])];
+        const double l2 = (B - A).SquaredNorm() + (C - B).SquaredNorm() + (A - C).SquaredNorm();
+        return l2 > 0 ? 2 * std::sqrt(3.0) * (((B - A) ^ (C - A)) * n) / l2 : -1;
+    }
+
+    // With the nodes `moved` all at `at`, do the faces around them (but `dying`) keep a fair shape
+    // and their orientation?
+    bool FacesStayValid(std::initializer_list<int> moved, std::initializer_list<int> dying, const P3 &at)
+    {
+        std::vector<int> faces;
+        for (int v : moved)
+            m.ForEachOutgoing(v, [&](int g) {
+                const int f = m.heFace[g];
+                if (std::find(dying.begin(), dying.end(), f) == dying.end() && std::find(faces.begin(), faces.end(), f) == faces.end())
+                    faces.push_back(f);
+            });
+        std::vector<P3> normals;
+        for (int f : faces) normals.push_back(m.FaceNormal(f).Normalize());
+        std::vector<P3> old;
+        for (int v : moved) old.push_back(m.pos[v]);
+        for (int v : moved) m.pos[v] = at;
+        bool valid = true;
+        for (size_t i = 0; i < faces.size() && valid; ++i) valid = TriangleQuality(faces[i], normals[i]) > 0.1;
+        size_t k = 0;
+        for (int v : moved) m.pos[v] = old[k++];
+        return valid;
+    }
+
+    // Moves v when no incident triangle folds or gets worse than the worst one now (or 0.2).
+    bool TryMove(int v, const P3 &to)
+    {
+        std::vector<int> faces;
+        std::vector<P3> normals;
+        m.ForEachOutgoing(v, [&](int g) {
+            faces.push_back(m.heFace[g]);
+            normals.push_back(m.FaceNormal(m.heFace[g]).Normalize());
+        });
+        double before = 1e9, after = 1e9;
+        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, TriangleQuality(faces[i], normals[i]));
+        const P3 old = m.pos[v];
+        m.pos[v] = to;
+        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, TriangleQuality(faces[i], normals[i]));
+        if (after > 1e-3 && after >= std::min(before, 0.2)) return true;
+        m.pos[v] = old;
+        return false;
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif
