@@ -16,9 +16,11 @@ QString QMorphFrontPlugin::qmorphInfo()
            "Q-Morph, an advancing-front triangle-to-quad transformation, done directly on the 3D surface. The "
            "initial front is the <b>selected face-edges</b> (from <i>Split Triangles along Front</i>, <i>Select "
            "Crease Edges</i> or your own selection) plus the mesh boundary; they cut the surface into patches, each "
-           "meshed from its own boundary loops in rows of quads parallel to the front. Initial front edges are never "
-           "changed (the paper leaves a triangle rather than applying seams or transitions on them); new nodes are "
-           "smoothed in their tangent plane and projected back onto the input surface, so nothing shrinks. "
+           "meshed from its own boundary loops in rows of quads parallel to the front, with Owen's seams, "
+           "transition seams and transition splits. Initial front edges are never changed (the paper leaves a triangle "
+           "rather than applying a seam on them, see <i>Preserve initial front</i>); new nodes are smoothed in their "
+           "tangent plane and projected back onto the input surface, so nothing shrinks. Optionally each patch is "
+           "re-meshed isotropically first. "
            "The result uses MeshLab's polygonal representation (a quad is two triangles sharing a faux edge): "
            "view it with <i>Polygonal Modality</i> on, save it with <i>-m ff</i> in PLY, or write real quads with the "
            "export path. Face quality (region id) is kept per patch."
@@ -30,6 +32,11 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList
 {
     QMorphCMeshO::Params d;
     const float diag = md.mm() ? md.mm()->cm.bbox.Diag() : 1.f;
+    par.addParam(RichBool("PreserveInitialFront", d.preserveInitialFront, "Preserve initial front",
+                          "On (the paper): where two front edges meet at a very small angle and one of them is an "
+                          "initial front edge, a triangle is left rather than a seam, so the quads along the front keep "
+                          "their alignment. Off: the seam joins the other node onto the front node. Initial front "
+                          "edges are never moved, split or removed either way."));
     par.addParam(RichBool("TangentSmoothing", d.smoothing, "Tangent-plane smoothing",
                           "Smooth new nodes after each quad and the whole quad mesh at the end, moving nodes only in "
                           "their tangent plane and projecting them back onto the input surface of their patch "
@@ -60,6 +67,7 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     const QString name = filterName(FP_QMORPH);
     MeshModel &mm = *md.mm();
     QMorphCMeshO::Params p;
+    p.preserveInitialFront = par.getBool("PreserveInitialFront");
     p.smoothing = par.getBool("TangentSmoothing");
     p.smoothingIterations = par.getInt("SmoothingIterations");
     p.creaseAngleDeg = par.getFloat("CreaseAngle");
@@ -99,10 +107,10 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
 
     const vcg_ext::QuadQualityReport &q = r.quality;
     Log("Q-Morph: %d patches (%d without front), %d initial front edges (%d of them unselected sharp creases); %d quads, %d triangles left "
-        "(%.1f%% of the area in quads); %d quads formed, %d by templates, %d seams, %d triangle pairs merged, %d doublets "
-        "removed, %d edges turned for valence; %d swaps, %d splits; %.3f s%s",
+        "(%.1f%% of the area in quads); %d quads formed, %d by templates, %d seams, %d transition seams, %d transition "
+        "splits, %d triangle pairs merged, %d doublets removed, %d edges turned for valence; %d swaps, %d splits; %.3f s%s",
         r.patches, r.patchesWithoutFront, r.initialFrontEdges, r.creaseEdges, r.quads, r.triangles, 100 * q.quadAreaFraction,
-        r.ops.quadsFormed, r.ops.templates, r.ops.seams, r.ops.pairedTriangles, r.ops.doublets, r.ops.valenceTurns, r.ops.swaps, r.ops.splits, r.seconds,
+        r.ops.quadsFormed, r.ops.templates, r.ops.seams, r.ops.transitionSeams, r.ops.transitionSplits, r.ops.pairedTriangles, r.ops.doublets, r.ops.valenceTurns, r.ops.swaps, r.ops.splits, r.seconds,
         qUtf8Printable(layerNote));
     if (p.targetEdgeLength > 0)
         Log("Q-Morph re-meshing to edge length %g: %d front edges cut into pieces; %d splits, %d collapses, %d flips",

@@ -44,7 +44,10 @@ public:
     typedef qmorph::P3 P3;
 
     struct Params {
-        bool preserveInitialFront = true;  // initial front edges are never changed (the paper)
+        bool preserveInitialFront = true;  // the paper: no seam onto initial front edges, a triangle is
+                                           // left instead; off: the seam joins the other node to the
+                                           // front node (initial front edges are never changed either way)
+        bool transitions = true;           // Owen's transition seam and transition split
         bool smoothing = true;             // tangent-plane smoothing (local, and final sweeps)
         int smoothingIterations = 5;       // final smoothing sweeps, 0..100
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
@@ -257,6 +260,8 @@ private:
         pp.smoothing = par.smoothing;
         pp.finalSmoothing = par.smoothingIterations;
         pp.closedAngle = par.closedAngleDeg * M_PI / 180;
+        pp.preserveInitialFront = par.preserveInitialFront;
+        pp.transitions = par.transitions;
 
         std::vector<int> localOfSector(3 * F, -1);
         for (size_t s = 0; s < order.size();) {
@@ -319,6 +324,8 @@ private:
                 res.ops.doublets += st.doublets; res.ops.iterations += st.iterations;
                 res.ops.valenceTurns += st.valenceTurns;
                 res.ops.seams += st.seams;
+                res.ops.transitionSeams += st.transitionSeams;
+                res.ops.transitionSplits += st.transitionSplits;
             }
             // write back: vertex ids (global, or new), positions of moved interior nodes
             std::vector<int> outId(mm.VertexCount(), 0);

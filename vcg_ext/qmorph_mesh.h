@@ -471,13 +471,17 @@ public:
     // vanish, y joins x (moved to `at`), the two other sides of each triangle become one edge.
     // False (nothing changed) when y is on the boundary, a side is a boundary edge, or the link
     // condition fails (x and y share a neighbour besides p and q: not a 2-manifold afterwards).
-    bool CollapseEdge(int h, const P3 &at)
+    // With `allowBoundarySide`, one side of a triangle may be a boundary (initial front) edge at x:
+    // the other side then takes its place on the boundary (the seam onto the initial front).
+    bool CollapseEdge(int h, const P3 &at, bool allowBoundarySide = false)
     {
         const int t = heTwin[h];
         if (t < 0 || !IsTri(heFace[h]) || !IsTri(heFace[t])) return false;
         const int x = Org(h), y = Dst(h), p = Org(hePrev[h]), q = Org(hePrev[t]);
         const int h1 = heNext[h], h2 = hePrev[h], t1 = heNext[t], t2 = hePrev[t];
-        if (p == q || OnBoundary(y) || heTwin[h1] < 0 || heTwin[h2] < 0 || heTwin[t1] < 0 || heTwin[t2] < 0) return false;
+        if (p == q || OnBoundary(y)) return false;  // y interior: h1 and t2 (at y) have twins
+        const int open = (heTwin[h2] < 0) + (heTwin[t1] < 0);
+        if (open > (allowBoundarySide ? 1 : 0)) return false;
         std::vector<int> outX, outY, nx;
         ForEachOutgoing(x, [&](int g) {
             outX.push_back(g);
@@ -492,10 +496,13 @@ public:
         }
         if (common != 2) return false;
         const int f1 = heFace[h], f2 = heFace[t];
-        const int pOut = heTwin[h1], qOut = heTwin[t1];  // p->y (becomes p->x) and q->x
+        // p->y (becomes p->x); q->x, or q's next edge when x-q was on the boundary
+        const int pOut = heTwin[h1], qOut = heTwin[t1] >= 0 ? heTwin[t1] : heNext[heTwin[t2]];
         for (int g : outY) heVert[g] = x;
         Link(heTwin[h1], heTwin[h2]);
         Link(heTwin[t1], heTwin[t2]);
+        if (heTwin[h2] < 0) heInitial[heTwin[h1]] = 1;  // now on the boundary in place of h2
+        if (heTwin[t1] < 0) heInitial[heTwin[t2]] = 1;
         for (int g : {h, h1, h2, t, t1, t2}) heFace[g] = -1;
         faceSize[f1] = faceSize[f2] = 0;
         vertAlive[y] = 0;

@@ -39,6 +39,10 @@ struct PatchParams {
     double migrationMinJacobian = 0.02; // quads made while bringing distant triangles together
     bool seams = true;                  // Owen's seam away from the initial front
     double seamAngle = M_PI / 6;        // front edges meeting at a smaller angle are sewn together
+    bool transitions = true;            // Owen's transition seam and transition split
+    double transitionRatio = 2.5;       // front edges differing more than this in length need a transition
+    bool preserveInitialFront = true;   // false: a seam may also close onto an initial front edge
+                                        // (its nodes never move: the other node joins them)
     int finalSmoothing = 5;             // tangent-plane smoothing sweeps at the end
     bool smoothing = true;              // local smoothing after each quad + final sweeps
 };
@@ -46,6 +50,7 @@ struct PatchParams {
 struct PatchStats {
     int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
     int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0, seams = 0;
+    int transitionSeams = 0, transitionSplits = 0;
 };
 
 class PatchMesher
@@ -84,7 +89,7 @@ public:
                 if (h < int(failedAt.size()) && failedAt[h] == successes) continue;
                 int len = front.LoopLength(h, 6);
                 bool ok = (len < 0 && p.seams && Seam(h)) || (len > 0 && CloseSmallLoop(h, len)) ||
-                          (len != 3 && FormQuad(h, state));
+                          (len < 0 && p.transitions && SplitLongFrontEdge(h)) || (len != 3 && FormQuad(h, state));
                 if (ok) ++successes;
                 else {
                     if (int(failedAt.size()) < m.HalfEdgeCount()) failedAt.resize(m.HalfEdgeCount(), -1);
@@ -117,6 +122,7 @@ private:
     FrontQueue queue;
     PatchStats stats;
     std::vector<int> failedAt;  // per half-edge: success count when it last failed
+    std::vector<char> transitioned;  // per node: part of a transition split already
     int successes = 0;
 
     int vertexCap;
@@ -181,22 +187,25 @@ private:
     double QuadQuality(int a, int b, int c, int d, const P3 &n) const
     {
         if (!m.DistinctNodes({a, b, c, d})) return -1;
-        const int v[4] = {a, b, c, d};
+        return QuadQuality({m.pos[a], m.pos[b], m.pos[c], m.pos[d]}, n);
+    }
+    static double QuadQuality(const std::array<P3, 4> &pos, const P3 &n)
+    {
         double shortest = 1e300, longest = 0;  // a needle (aspect above 50) is as bad as a fold
         for (int k = 0; k < 4; ++k) {
-            double l = (m.pos[v[(k + 1) % 4]] - m.pos[v[k]]).Norm();
+            double l = (pos[(k + 1) % 4] - pos[k]).Norm();
             shortest = std::min(shortest, l);
             longest = std::max(longest, l);
         }
         if (!(shortest > 0.02 * longest)) return -1;
         P3 N(0, 0, 0);
-        for (int k = 0; k < 4; ++k) N += m.pos[v[k]] ^ m.pos[v[(k + 1) % 4]];
+        for (int k = 0; k < 4; ++k) N += pos[k] ^ pos[(k + 1) % 4];
         double l = N.Norm();
         if (!(l > 0) || N * n <= 0) return -1;
         N /= l;
         double worst = 1;
         for (int k = 0; k < 4; ++k) {
-            P3 e1 = m.pos[v[(k + 1) % 4]] - m.pos[v[k]], e2 = m.pos[v[(k + 3) % 4]] - m.pos[v[k]];
+            P3 e1 = pos[(k + 1) % 4] - pos[k], e2 = pos[(k + 3) % 4] - pos[k];
             double d = e1.Norm() * e2.Norm();
             worst = std::min(worst, d > 0 ? ((e1 ^ e2) * N) / d : -1.0);
         }
@@ -477,12 +486,25 @@ private:
     // Owen's seam: front edges A->B and B->C meeting at a very small angle, with the one thin
     // triangle (A B C) between them, are closed by joining A and C (the edge A-C collapses). Only
     // away from the initial front (both edges have a quad on their other side): on the initial
-    // front the paper leaves a triangle instead.
+    // front the paper leaves a triangle instead. With preserveInitialFront off, one of the two may
+    // be an initial front edge: the other node joins its fixed node, the front itself is unchanged.
+    // Transition seam: when the two lengths differ by more than transitionRatio, the longer edge
+    // (not initial) first gets a transition split at the shorter one's length, then the seam.
     bool Seam(int h)
     {
         double angle = 0;
         const int n = front.NextFront(h, &angle);
-        if (n < 0 || m.heNext[h] != n || m.heTwin[h] < 0 || m.heTwin[n] < 0 || angle >= p.seamAngle) return false;
+        if (n < 0 || m.heNext[h] != n || angle >= p.seamAngle) return false;
+        const bool hInitial = m.heTwin[h] < 0, nInitial = m.heTwin[n] < 0;
+        if (hInitial && nInitial) return false;
+        if ((hInitial || nInitial) && p.preserveInitialFront) return false;
+        const double lh = m.Length(h), ln = m.Length(n);
+        if (p.transitions && std::max(lh, ln) > p.transitionRatio * std::min(lh, ln)) {
+            const bool split = ln > lh ? !nInitial && TransitionSplit(n, lh / ln, true) : !hInitial && TransitionSplit(h, 1 - ln / lh, false);
+            if (!split) return false;
+            ++stats.transitionSeams;
+            return true;  // the seam follows when the queue reaches the new, shorter edge
+        }
         const int e = m.heNext[n];  // C -> A
         const int a = m.Org(h), c = m.Dst(n);
         if (m.Dst(e) != a || (m.vertFixed[a] && m.vertFixed[c])) return false;
@@ -515,11 +537,68 @@ private:
         for (size_t i = 0; i < faces.size() && valid; ++i) valid = FaceQualityAt(faces[i], normals[i]) > 0.05;
         m.pos[keep] = oldKeep;
         m.pos[gone] = oldGone;
-        if (!valid || !m.CollapseEdge(h0, at)) return false;
+        if (!valid || !m.CollapseEdge(h0, at, !p.preserveInitialFront)) return false;
         ++stats.seams;
         AfterNewFaces({}, {keep});
         PushAround(keep);
         return true;
+    }
+
+    // ---- transitions -----------------------------------------------------------------------------
+    // Owen's transition split of a front edge s = P->R with a quad (R P x y) behind it: a node M on
+    // P-R (at fraction t from P) turns that quad into a quad and a triangle handed back to the
+    // unmeshed side: (P x y M) + (M y R) with the triangle at R's end, else (R M x y) + (M P x).
+    // The front then runs P-M-y-R (or P-x-M-R): one edge becomes three, the parity of the loop is
+    // kept, and the next row can use shorter elements. Never on the initial front (no quad behind).
+    bool TransitionSplit(int s, double t, bool triangleAtR)
+    {
+        const int tw = m.heTwin[s];
+        if (tw < 0 || !m.IsTri(m.heFace[s]) || !m.IsQuad(m.heFace[tw]) || m.VertexCount() >= vertexCap) return false;
+        const int quad = m.heFace[tw];
+        const std::vector<int> loop{tw, m.heNext[tw], m.heNext[m.heNext[tw]], m.hePrev[tw]};
+        const int R = m.Org(tw), P = m.Dst(tw), x = m.Dst(loop[1]), y = m.Org(loop[3]), apex = m.Org(m.hePrev[s]);
+        transitioned.resize(m.VertexCount(), 0);
+        if (transitioned[P] || transitioned[R]) return false;  // one transition per place: no split-seam cycles
+        const double len = m.Length(s);
+        if (!(t * len > minLength && (1 - t) * len > minLength)) return false;
+        const P3 point = m.pos[P] + (m.pos[R] - m.pos[P]) * t;
+        int hm = home[P];
+        const P3 M = proj.Project(point, hm);
+        const P3 n = m.FaceNormal(quad) + m.FaceNormal(m.heFace[s]);
+        const std::array<P3, 4> kept = triangleAtR ? std::array<P3, 4>{m.pos[P], m.pos[x], m.pos[y], M}
+                                                   : std::array<P3, 4>{m.pos[R], M, m.pos[x], m.pos[y]};
+        auto positive = [&](const P3 &a, const P3 &b, const P3 &c) { return ((b - a) ^ (c - a)) * n > 1e-3 * (b - a).SquaredNorm(); };
+        if (QuadQuality(kept, n) <= std::max(p.minQuadJacobian, 0.2)) return false;
+        if (triangleAtR ? !positive(M, m.pos[y], m.pos[R]) : !positive(M, m.pos[P], m.pos[x])) return false;
+        if (!positive(m.pos[P], M, m.pos[apex]) || !positive(M, m.pos[R], m.pos[apex])) return false;  // the triangle ahead, split
+        const int diagonalFrom = triangleAtR ? P : R, diagonalTo = triangleAtR ? y : x;
+        if (m.EdgeExists(diagonalFrom, diagonalTo)) return false;
+        const int level = m.faceLevel[quad];
+        // 1. the quad back into two triangles, along the diagonal the new quad keeps
+        if (triangleAtR) m.ReplaceRegion(loop, {quad}, {}, {{0, 1, 3}, {1, 2, 3}}, level);  // (R P y) + (P x y)
+        else m.ReplaceRegion(loop, {quad}, {}, {{0, 1, 2}, {0, 2, 3}}, level);              // (R P x) + (R x y)
+        // 2. the new node on P-R, between triangles now
+        const int v = NewVertexOnEdge(s, point);
+        transitioned.resize(m.VertexCount(), 0);
+        for (int w : {P, R, v, x, y}) transitioned[w] = 1;
+        // 3. the two triangles of the new quad merged
+        const int across = triangleAtR ? m.FindHalfEdge(y, P) : m.FindHalfEdge(R, x);
+        const int q = m.MergeTriangles(across, level);
+        ++stats.transitionSplits;
+        AfterNewFaces({q}, {v});
+        for (int w : {P, R, x, y}) PushAround(w);
+        return true;
+    }
+
+    // A front edge far longer than both its neighbours (rows of very different sizes meeting) gets
+    // a transition split at its middle, on the side where the quad left behind is better.
+    bool SplitLongFrontEdge(int h)
+    {
+        if (m.heTwin[h] < 0) return false;
+        const int prev = front.PrevFront(h), next = front.NextFront(h);
+        if (prev < 0 || next < 0) return false;
+        if (m.Length(h) <= p.transitionRatio * std::max(m.Length(prev), m.Length(next))) return false;
+        return TransitionSplit(h, 0.5, true) || TransitionSplit(h, 0.5, false);
     }
 
     // ---- small loops ----------------------------------------------------------------------------

@@ -111,6 +111,21 @@ inline void MakeAnnulus(TMesh &m, int outerEdges, int innerEdges, double h, unsi
     MakeDomain(m, b, [](P2 q) { double r2 = q.x * q.x + q.y * q.y; return r2 < 1 - 1e-9 && r2 > 0.45 * 0.45 + 1e-9; }, h, seed);
 }
 
+// Strip [0,4] x [0,1] with `bottomEdges` boundary edges below and `topEdges` above (3 on each
+// end): fronts of very different edge lengths meet in the middle (Owen's transitions).
+inline void MakeGradedStrip(TMesh &m, int bottomEdges, int topEdges, double h, unsigned seed = 1)
+{
+    std::vector<P2> b;
+    auto side = [&](P2 a, P2 c, int n) {
+        for (int i = 0; i < n; ++i) b.push_back({a.x + (c.x - a.x) * i / n, a.y + (c.y - a.y) * i / n});
+    };
+    side({0, 0}, {4, 0}, bottomEdges);
+    side({4, 0}, {4, 1}, 3);
+    side({4, 1}, {0, 1}, topEdges);
+    side({0, 1}, {0, 0}, 3);
+    MakeDomain(m, b, [](P2 q) { return q.x > 1e-9 && q.x < 4 - 1e-9 && q.y > 1e-9 && q.y < 1 - 1e-9; }, h, seed);
+}
+
 // L-shape [0,2]^2 minus [1,2]^2, `perUnit` boundary edges per unit length (+ `extra` points on
 // the long bottom side to change the parity).
 inline void MakeLShape(TMesh &m, int perUnit, double h, int extra = 0, unsigned seed = 1)

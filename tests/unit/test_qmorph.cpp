@@ -159,6 +159,25 @@ TEST(QMorph, PlanarDomainsAllQuadsWhenEvenOneTriangleWhenOdd)
     }
 }
 
+TEST(QMorph, GradedStripsUseTransitionsAndKeepTheParity)
+{
+    struct Case { int bottom, top; unsigned seed; };
+    int transitions = 0;
+    for (const Case &c : {Case{32, 4, 2}, Case{32, 8, 1}, Case{48, 6, 1}, Case{16, 4, 3}, Case{24, 8, 2}}) {
+        SCOPED_TRACE(std::to_string(c.bottom) + " below, " + std::to_string(c.top) + " above");
+        TMesh m;
+        MakeGradedStrip(m, c.bottom, c.top, 0.3, c.seed);
+        const int boundary = vcg_ext::MeshChecks<TMesh>::Inspect(m).boundaryEdges;
+        ASSERT_EQ(boundary, c.bottom + c.top + 6);
+        QM::Result r = RunAndCheckInvariants(m);
+        transitions += r.ops.transitionSeams + r.ops.transitionSplits;
+        EXPECT_EQ(r.triangles % 2, 0) << "a transition turns one front edge into three: the parity stays even";
+        EXPECT_GT(r.quality.meanJacobian, 0.6) << Describe(r);
+        ExpectAllFacesFacingUp(m);
+    }
+    EXPECT_GT(transitions, 3) << "rows of edge length 1/8 meeting rows of 1/2 need transitions";
+}
+
 TEST(QMorph, CubeWithItsTwelveEdgesSelectedGivesSixQuadPatches)
 {
     TMesh m;
@@ -325,6 +344,22 @@ TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
     EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
     EXPECT_NEAR(MeanSideLength(m), p.targetEdgeLength, 0.25 * p.targetEdgeLength);
     EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+}
+
+TEST(QMorph, WithoutPreservingTheInitialFrontSeamsCloseOntoIt)
+{
+    TMesh on, off;
+    ASSERT_TRUE(LoadOff(on, MeshDir() + "/elephant.off"));
+    vcg_ext::VSASegmentation<TMesh>::Params vp;
+    vcg_ext::VSASegmentation<TMesh>::Segment(on, vp);
+    SelectRegionBoundaries(on);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(off, on);
+    QM::Result kept = RunAndCheckInvariants(on);
+    QM::Params p;
+    p.preserveInitialFront = false;
+    QM::Result sewn = RunAndCheckInvariants(off, p);  // the front edges themselves are still all kept
+    EXPECT_GT(sewn.ops.seams, kept.ops.seams) << "seams where one edge is initial front are now allowed";
+    EXPECT_LE(sewn.triangles, kept.triangles) << "each such seam closes a triangle the paper would leave";
 }
 
 TEST(QMorph, BadInputIsRefusedAndLeftUnchanged)
