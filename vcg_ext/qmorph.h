@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <iterator>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -263,6 +264,16 @@ private:
         pp.preserveInitialFront = par.preserveInitialFront;
         pp.transitions = par.transitions;
 
+        // per input vertex: the patches holding it (sorted), to tell which chords between front
+        // nodes another patch could also make
+        std::vector<std::vector<int>> patchesOfVertex(m.vert.size());
+        for (int f = 0; f < F; ++f)
+            for (int k = 0; k < 3; ++k) {
+                std::vector<int> &ps = patchesOfVertex[tri[f][k]];
+                if (std::find(ps.begin(), ps.end(), patchOf[f]) == ps.end()) ps.push_back(patchOf[f]);
+            }
+        for (auto &ps : patchesOfVertex) std::sort(ps.begin(), ps.end());
+
         std::vector<int> localOfSector(3 * F, -1);
         for (size_t s = 0; s < order.size();) {
             size_t e = s;
@@ -309,9 +320,20 @@ private:
             mm.SetKeys(globalOf);
             SurfaceProjector surface;
             surface.Build(pts, ltri);
-            std::unordered_map<int, int> sharedOfLocal;  // front subdivision node -> its output id
+            std::unordered_map<int, int> sharedOfLocal;  // front subdivision node -> its point index
+            if (hasFront && par.targetEdgeLength > 0) SubdivideFront(mm, globalOf, home, sharedOfLocal, res, patchesOfVertex);
+            if (hasFront) {  // which other patches hold each front node (see NewChordBetweenFrontNodes)
+                const int patch = patchOf[order[s]];
+                mm.otherPatches.assign(mm.VertexCount(), {});
+                for (int v = 0; v < mm.VertexCount(); ++v) {
+                    if (!mm.vertFixed[v]) continue;
+                    auto shared = sharedOfLocal.find(v);
+                    std::vector<int> &ps = mm.otherPatches[v];
+                    ps = shared != sharedOfLocal.end() ? sharedPatches[shared->second] : patchesOfVertex[globalOf[v]];
+                    ps.erase(std::remove(ps.begin(), ps.end(), patch), ps.end());
+                }
+            }
             if (hasFront && par.targetEdgeLength > 0) {
-                SubdivideFront(mm, globalOf, home, sharedOfLocal, res);
                 qmorph::PatchRemesher remesher(mm, surface, home, par.targetEdgeLength);
                 qmorph::PatchRemesher::Stats rs = remesher.Run(par.remeshIterations);
                 res.remesh.splits += rs.splits; res.remesh.collapses += rs.collapses; res.remesh.flips += rs.flips;
@@ -333,7 +355,7 @@ private:
                 if (!mm.vertAlive[v]) continue;
                 auto shared = sharedOfLocal.find(v);
                 if (shared != sharedOfLocal.end()) {
-                    outId[v] = shared->second;
+                    outId[v] = sharedOut[shared->second];
                 } else if (v < int(globalOf.size())) {
                     int g = globalOf[v];
                     outId[v] = g;
@@ -370,10 +392,12 @@ private:
     std::vector<P3> newPoints;                       // vertices added to the mesh (output id -k-1: newPoints[k])
     std::unordered_map<uint64_t, int> sharedOfEdge;  // edge key -> first of its points in sharedOut
     std::vector<int> sharedOut;                      // output id (negative: new vertex) per point
+    std::vector<std::vector<int>> sharedPatches;     // patches holding each point (sorted)
     std::vector<std::pair<int, int>> frontChains;    // selected sub-edges, as output ids
 
     void SubdivideFront(qmorph::MixedMesh &mm, const std::vector<int> &globalOf, std::vector<int> &home,
-                        std::unordered_map<int, int> &sharedOfLocal, Result &res)
+                        std::unordered_map<int, int> &sharedOfLocal, Result &res,
+                        const std::vector<std::vector<int>> &patchesOfVertex)
     {
         const double L = par.targetEdgeLength;
         const int boundaryCount = mm.HalfEdgeCount();
@@ -393,6 +417,10 @@ private:
                 for (int k = 1; k < n; ++k) {
                     newPoints.push_back(plo + (phi - plo) * (double(k) / n));
                     sharedOut.push_back(-int(newPoints.size()));
+                    std::vector<int> both;  // the patches on the edge hold its points
+                    std::set_intersection(patchesOfVertex[lo].begin(), patchesOfVertex[lo].end(), patchesOfVertex[hi].begin(),
+                                          patchesOfVertex[hi].end(), std::back_inserter(both));
+                    sharedPatches.push_back(both);
                     chain.push_back(sharedOut.back());
                 }
                 chain.push_back(hi);
@@ -405,7 +433,7 @@ private:
             std::vector<int> made = qmorph::PatchRemesher::SubdivideBoundaryEdge(mm, home, h, points);
             for (int k = 0; k < n - 1; ++k) {
                 const int point = it->second + (ga == lo ? k : n - 2 - k);
-                sharedOfLocal[made[k]] = sharedOut[point];
+                sharedOfLocal[made[k]] = point;
                 keys.resize(mm.VertexCount(), 0);
                 keys[made[k]] = INT_MIN / 2 + point;  // copies of one point (both sides of a slit) share it
             }

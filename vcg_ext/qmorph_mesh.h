@@ -40,6 +40,8 @@ public:
     std::vector<int> vertKey;     // which input vertex a node is (copies of a vertex cut by the front
                                   // share it); new nodes get a key of their own
     std::unordered_map<int, std::vector<int>> copiesOfKey;  // keys held by several nodes
+    std::vector<std::vector<int>> otherPatches;  // per initial-front node: the other patches holding it
+                                                 // (empty when not told: every chord is then suspect)
     // half-edges
     std::vector<int> heVert, heNext, hePrev, heTwin, heFace;  // heFace < 0: dead
     std::vector<char> heInitial;  // on the initial front (patch boundary): never flipped, split or merged
@@ -160,6 +162,21 @@ public:
         bool found = false;
         ForEachEdgeBetween(a, b, [&](int) { found = true; });
         return found;
+    }
+
+    // Would an edge a-b be a new chord between two initial-front nodes that another patch also
+    // holds? That patch could make the same chord (two patches, one edge, four faces), so such
+    // chords are never created; existing edges are fine.
+    bool NewChordBetweenFrontNodes(int a, int b) const
+    {
+        if (!vertFixed[a] || !vertFixed[b] || EdgeExists(a, b)) return false;
+        if (a >= int(otherPatches.size()) || b >= int(otherPatches.size())) return true;
+        const std::vector<int> &pa = otherPatches[a], &pb = otherPatches[b];  // sorted
+        for (size_t i = 0, j = 0; i < pa.size() && j < pb.size();) {
+            if (pa[i] == pb[j]) return true;  // a patch holding both could make the same chord
+            if (pa[i] < pb[j]) ++i; else ++j;
+        }
+        return false;
     }
 
     // Are a and b opposite corners of a quad? (an edge a-b would then duplicate that quad's
@@ -303,7 +320,7 @@ public:
         int t = heTwin[h];
         if (t < 0 || heInitial[h] || !IsTri(heFace[h]) || !IsTri(heFace[t])) return false;
         int a = Org(h), b = Dst(h), c = Org(hePrev[h]), d = Org(hePrev[t]);
-        if (c == d || EdgeExists(c, d) || OppositeInQuad(c, d)) return false;
+        if (c == d || EdgeExists(c, d) || OppositeInQuad(c, d) || NewChordBetweenFrontNodes(c, d)) return false;
         P3 n1 = FaceNormal(heFace[h]), n2 = FaceNormal(heFace[t]);
         P3 n = n1 + n2;
         if (!(n.Norm() > 0)) return false;

@@ -537,6 +537,8 @@ private:
         for (size_t i = 0; i < faces.size() && valid; ++i) valid = FaceQualityAt(faces[i], normals[i]) > 0.05;
         m.pos[keep] = oldKeep;
         m.pos[gone] = oldGone;
+        if (m.vertFixed[keep])  // gone's edges move to keep: none may become a new chord between front nodes
+            m.ForEachOutgoing(gone, [&](int g) { if (m.Dst(g) != keep && m.NewChordBetweenFrontNodes(keep, m.Dst(g))) valid = false; });
         if (!valid || !m.CollapseEdge(h0, at, !p.preserveInitialFront)) return false;
         ++stats.seams;
         AfterNewFaces({}, {keep});
@@ -572,7 +574,7 @@ private:
         if (triangleAtR ? !positive(M, m.pos[y], m.pos[R]) : !positive(M, m.pos[P], m.pos[x])) return false;
         if (!positive(m.pos[P], M, m.pos[apex]) || !positive(M, m.pos[R], m.pos[apex])) return false;  // the triangle ahead, split
         const int diagonalFrom = triangleAtR ? P : R, diagonalTo = triangleAtR ? y : x;
-        if (m.EdgeExists(diagonalFrom, diagonalTo)) return false;
+        if (m.EdgeExists(diagonalFrom, diagonalTo) || m.NewChordBetweenFrontNodes(diagonalFrom, diagonalTo)) return false;
         const int level = m.faceLevel[quad];
         // 1. the quad back into two triangles, along the diagonal the new quad keeps
         if (triangleAtR) m.ReplaceRegion(loop, {quad}, {}, {{0, 1, 3}, {1, 2, 3}}, level);  // (R P y) + (P x y)
@@ -652,7 +654,8 @@ private:
         for (const auto &poly : bestPolys) {
             for (size_t k = 0; k < poly.size(); ++k) {
                 int i = poly[k], j = poly[(k + 1) % poly.size()];
-                if (j != (i + 1) % L && m.EdgeOutside(v[i], v[j], faces)) return false;  // the new diagonal exists
+                if (j != (i + 1) % L && (m.EdgeOutside(v[i], v[j], faces) || m.NewChordBetweenFrontNodes(v[i], v[j])))
+                    return false;  // the new diagonal exists, or could exist in the neighbouring patch
             }
             if (poly.size() == 4 && !m.QuadHasFreeDiagonal(v[poly[0]], v[poly[1]], v[poly[2]], v[poly[3]], faces)) return false;
         }
@@ -758,7 +761,7 @@ private:
             bool removed = (x == v[0] && y == v[2]) || (x == v[2] && y == v[0]);
             return !removed && m.EdgeExists(x, y);
         };
-        return !m.EdgeExists(a, c) && TriPositive(a, b, c, n) && QuadQuality(c, d, e, a, n) > p.migrationMinJacobian &&
+        return !m.EdgeExists(a, c) && !m.NewChordBetweenFrontNodes(a, c) && TriPositive(a, b, c, n) && QuadQuality(c, d, e, a, n) > p.migrationMinJacobian &&
                !(taken(c, e) && taken(d, a));
     }
 
@@ -936,7 +939,7 @@ private:
                 double bestGain = 1e-9, bestQ = 0;
                 for (int i : {1, 2}) {  // new diagonal between positions i and i+3
                     int j = i + 3;
-                    if (m.EdgeExists(v[i], v[j])) continue;
+                    if (m.EdgeExists(v[i], v[j]) || m.NewChordBetweenFrontNodes(v[i], v[j])) continue;
                     double before = oldDev + dev(v[i], val[i]) + dev(v[j], val[j]);
                     double after = dev(v[a], val[a] - 1) + dev(v[b], val[b] - 1) + dev(v[i], val[i] + 1) + dev(v[j], val[j] + 1);
                     double q = std::min(QuadQuality(v[i], v[i + 1], v[i + 2], v[j], n), QuadQuality(v[j], v[(j + 1) % 6], v[(j + 2) % 6], v[i], n));

@@ -107,6 +107,9 @@ private:
             bool ok = true;
             for (int v : {x, y})
                 m.ForEachOutgoing(v, [&](int g) { if ((m.pos[m.Dst(g)] - at).Norm() > hi && m.Dst(g) != x && m.Dst(g) != y) ok = false; });
+            // no new chord between front nodes that another patch could also make
+            if (m.vertFixed[x])
+                m.ForEachOutgoing(y, [&](int g) { if (m.Dst(g) != x && m.NewChordBetweenFrontNodes(x, m.Dst(g))) ok = false; });
             if (!ok || !FacesStayValid({x, y}, {m.heFace[h], m.heFace[m.heTwin[h]]}, at)) continue;
             if (m.CollapseEdge(h, at)) ++stats.collapses;
         }

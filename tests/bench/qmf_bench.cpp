@@ -224,7 +224,9 @@ void Usage()
         "  --repeats R         timing repeats on the small meshes (best time; default 3)\n"
         "  --cgal-iterations N Lloyd iterations in the CGAL comparison (default 20)\n"
         "  --no-fork           run everything in this process (a crash stops the benchmark)\n"
-        "  --out FILE          also write the markdown report to FILE\n");
+        "  --out FILE          also write the markdown report to FILE\n"
+        "  --remesh F          Q-Morph re-meshes each patch first to F x the mean edge length of its input\n"
+        "  --no-preserve       Q-Morph with 'Preserve initial front' off\n");
 }
 
 bool FileExists(const std::string &p)
@@ -273,6 +275,20 @@ struct PipelineRun {
 
 // Runs the 4 stages on a copy of `input`; `work` ends as the Q-Morph output, `splitOut` (if given)
 // receives the split mesh (Q-Morph's input).
+// Q-Morph options of the whole run (--remesh, --no-preserve); defaults otherwise.
+QM::Params gQMorphParams;
+double gRemeshFactor = 0;  // > 0: Q-Morph re-meshes to this times the mean edge length of its input
+
+double MeanEdgeLength(const TMesh &m)
+{
+    double sum = 0;
+    long n = 0;
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k, ++n) sum += vcg::Distance(f.cP(k), f.cP((k + 1) % 3));
+    return n ? sum / n : 0;
+}
+
 void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMesh &work, TMesh *splitOut,
                  const std::string &label, bool verbose)
 {
@@ -340,7 +356,9 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
 
     // 4. Q-Morph
     t0 = begin(3, "Q-Morph");
-    r.qm = QM::Apply(work, QM::Params());
+    QM::Params qp = gQMorphParams;
+    if (gRemeshFactor > 0) qp.targetEdgeLength = gRemeshFactor * MeanEdgeLength(work);
+    r.qm = QM::Apply(work, qp);
     r.tQm = Since(t0);
     end(3);
     if (!r.qm.error.empty()) { r.error = r.qm.error; r.failedStage = "Q-Morph"; return; }
@@ -798,6 +816,8 @@ int main(int argc, char **argv)
         else if (a == "--cgal-iterations") o.cgalIterations = std::max(2, std::atoi(next().c_str()));
         else if (a == "--no-fork") o.fork = false;
         else if (a == "--out") o.out = next();
+        else if (a == "--remesh") gRemeshFactor = std::atof(next().c_str());
+        else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
         else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "unknown option %s\n", a.c_str()); Usage(); return 2; }
         else o.names.push_back(a);
     }

@@ -102,16 +102,26 @@ void ToTMesh(const ObjData &p, TMesh &m)
     Build(m, v, t);
 }
 
-void RunPipeline(const std::string &mesh, double hausdorffBound)
+// remeshFraction > 0: Q-Morph re-meshes first, to that fraction of the bounding box diagonal.
+void RunPipeline(const std::string &mesh, double hausdorffBound, double remeshFraction = 0)
 {
-    std::string dir = WorkDir("pipeline_" + mesh);
+    std::string dir = WorkDir("pipeline_" + mesh + (remeshFraction > 0 ? "_remeshed" : ""));
+    const std::string input = std::string(QMF_TEST_MESH_DIR) + "/" + mesh + ".off";
     // the shipped script, with the export path of Q-Morph set
     std::string script = ReadText(Script("closed_mesh_to_quads.mlx"));
-    std::string marker = "name=\"ExportPath\" value=\"\"";
-    ASSERT_NE(script.find(marker), std::string::npos);
-    script.replace(script.find(marker), marker.size(), "name=\"ExportPath\" value=\"" + dir + "/quads.obj\"");
+    auto setParam = [&](const std::string &from, const std::string &to) {
+        ASSERT_NE(script.find(from), std::string::npos) << from;
+        script.replace(script.find(from), from.size(), to);
+    };
+    setParam("name=\"ExportPath\" value=\"\"", "name=\"ExportPath\" value=\"" + dir + "/quads.obj\"");
+    std::string length;
+    if (remeshFraction > 0) {
+        TMesh in;
+        ASSERT_TRUE(LoadOff(in, input));
+        length = std::to_string(remeshFraction * in.bbox.Diag());
+        setParam("name=\"TargetEdgeLength\" value=\"0\"", "name=\"TargetEdgeLength\" value=\"" + length + "\"");
+    }
     std::ofstream(dir + "/pipeline.mlx") << script;
-    const std::string input = std::string(QMF_TEST_MESH_DIR) + "/" + mesh + ".off";
     RunResult r = RunMeshLabServer(dir, "-i " + Quote(input) + " -o out.ply -m ff fq sa -s pipeline.mlx");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     ASSERT_TRUE(FileExists(dir + "/out.ply")) << r.output;
@@ -120,6 +130,10 @@ void RunPipeline(const std::string &mesh, double hausdorffBound)
     ASSERT_TRUE(std::regex_search(r.output, mq, std::regex("Q-Morph: (\\d+) patches .*?; (\\d+) quads, (\\d+) triangles left"))) << r.output;
     const int quads = std::stoi(mq[2]), tris = std::stoi(mq[3]);
     EXPECT_NE(r.output.find(" 0 inverted"), std::string::npos);
+    if (remeshFraction > 0) {
+        EXPECT_TRUE(std::regex_search(r.output, std::regex("re-meshing to edge length [0-9.e-]+: [1-9]\\d* front edges cut into pieces")))
+            << r.output;
+    }
 
     // the exported OBJ: real quads, as many as logged, a closed 2-manifold with the input's genus
     ObjData obj = ReadObj(dir + "/quads.obj");
@@ -170,3 +184,6 @@ void RunPipeline(const std::string &mesh, double hausdorffBound)
 TEST(QMorphPipeline, FandiskThroughMeshlabserver) { RunPipeline("fandisk", 0.005); }
 
 TEST(QMorphPipeline, ElephantThroughMeshlabserver) { RunPipeline("elephant", 0.01); }
+
+// The optional re-meshing (1% of the diagonal) through the shipped script: same invariants.
+TEST(QMorphPipeline, FandiskRemeshedThroughMeshlabserver) { RunPipeline("fandisk", 0.005, 0.01); }
