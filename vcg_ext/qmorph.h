@@ -49,6 +49,8 @@ public:
                                            // left instead; off: the seam joins the other node to the
                                            // front node (initial front edges are never changed either way)
         bool transitions = true;           // Owen's transition seam and transition split
+        bool cleanup = true;               // valence turns and diagonal collapses after the front
+        bool rescueBadQuads = true;        // quads below 0.3 scaled Jacobian: their nodes re-placed
         bool smoothing = true;             // tangent-plane smoothing (local, and final sweeps)
         int smoothingIterations = 5;       // final smoothing sweeps, 0..100
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
@@ -263,6 +265,8 @@ private:
         pp.closedAngle = par.closedAngleDeg * M_PI / 180;
         pp.preserveInitialFront = par.preserveInitialFront;
         pp.transitions = par.transitions;
+        pp.cleanup = par.cleanup;
+        pp.rescueBadQuads = par.rescueBadQuads;
 
         // per input vertex: the patches holding it (sorted), to tell which chords between front
         // nodes another patch could also make
@@ -348,6 +352,7 @@ private:
                 res.ops.seams += st.seams;
                 res.ops.transitionSeams += st.transitionSeams;
                 res.ops.transitionSplits += st.transitionSplits;
+                res.ops.diagonalCollapses += st.diagonalCollapses;
             }
             // write back: vertex ids (global, or new), positions of moved interior nodes
             std::vector<int> outId(mm.VertexCount(), 0);

@@ -43,6 +43,8 @@ struct PatchParams {
     double transitionRatio = 2.5;       // front edges differing more than this in length need a transition
     bool preserveInitialFront = true;   // false: a seam may also close onto an initial front edge
                                         // (its nodes never move: the other node joins them)
+    bool cleanup = true;                // topological clean-up: valence turns and diagonal collapses
+    bool rescueBadQuads = true;         // nodes of quads below 0.3 moved to raise their worst quality
     int finalSmoothing = 5;             // tangent-plane smoothing sweeps at the end
     bool smoothing = true;              // local smoothing after each quad + final sweeps
 };
@@ -50,7 +52,7 @@ struct PatchParams {
 struct PatchStats {
     int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
     int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0, seams = 0;
-    int transitionSeams = 0, transitionSplits = 0;
+    int transitionSeams = 0, transitionSplits = 0, diagonalCollapses = 0;
 };
 
 class PatchMesher
@@ -107,9 +109,16 @@ public:
         PairLeftoverTriangles(p.migrationMinJacobian);
         MigrateTrianglesIntoPairs();
         DissolveDoublets();
-        ImproveValences();
-        if (p.smoothing)
+        if (p.cleanup) {
+            ImproveValences();
+            CollapseQuadDiagonals();
+            DissolveDoublets();
+            ImproveValences();
+        }
+        if (p.smoothing) {
             for (int it = 0; it < p.finalSmoothing; ++it) SmoothAll();
+            if (p.rescueBadQuads) ImproveBadQuads();
+        }
         return stats;
     }
 
@@ -906,7 +915,9 @@ private:
     // ideal (4 inside; on the patch boundary, one more than the number of right angles that fit
     // in the node's angle) and the two new quads are not worse than 0.3 scaled Jacobian (or than
     // the old ones).
-    void ImproveValences()
+    // Ideal valence per node: 4 inside; on the patch boundary, one more than the number of right
+    // angles that fit in the node's angle.
+    std::vector<int> IdealValences() const
     {
         std::vector<int> ideal(m.VertexCount(), 4);
         for (int v = 0; v < m.VertexCount(); ++v) {
@@ -915,6 +926,169 @@ private:
             m.ForEachOutgoing(v, [&](int g) { angle += m.CornerAngle(g); });
             ideal[v] = std::max(1, int(std::lround(angle / (M_PI / 2)))) + 1;
         }
+        return ideal;
+    }
+
+    // Quad clean-up by diagonal collapse: the quad (a b c d) vanishes and c joins a at their
+    // midpoint (a and c inside the patch) when that brings the valences of a, b, c, d closer to
+    // their ideal: typically a and c of valence 3 with b or d of valence 5. The quads around must
+    // stay fair (not below 0.3 scaled Jacobian or below the worst of them now).
+    void CollapseQuadDiagonals()
+    {
+        const std::vector<int> ideal = IdealValences();
+        auto dev = [&](int v, int val) { double d = val - ideal[v]; return d * d; };
+        for (int pass = 0; pass < 3; ++pass) {
+            int collapsed = 0;
+            for (int f = 0; f < m.FaceCount(); ++f) {
+                if (!m.FaceAlive(f) || !m.IsQuad(f)) continue;
+                std::vector<int> loop{m.faceHe[f], m.heNext[m.faceHe[f]], m.heNext[m.heNext[m.faceHe[f]]], m.hePrev[m.faceHe[f]]};
+                for (int i = 0; i < 2; ++i) {
+                    const int a = m.Org(loop[i]), b = m.Org(loop[i + 1]), c = m.Org(loop[i + 2]), d = m.Org(loop[(i + 3) % 4]);
+                    if (m.vertFixed[a] || m.vertFixed[c] || !m.DistinctNodes({a, b, c, d})) continue;
+                    const int va = m.Valence(a), vb = m.Valence(b), vc = m.Valence(c), vd = m.Valence(d);
+                    const double before = dev(a, va) + dev(b, vb) + dev(c, vc) + dev(d, vd);
+                    const double after = dev(a, va + vc - 2) + dev(b, vb - 1) + dev(d, vd - 1);
+                    if (after >= before || vb <= 3 || vd <= 3) continue;
+                    if (CollapseQuad(f, i)) { ++collapsed; break; }
+                }
+            }
+            stats.diagonalCollapses += collapsed;
+            if (!collapsed) break;
+        }
+    }
+
+    // Collapses quad f along its diagonal from corner i to corner i+2 (the second joins the first).
+    bool CollapseQuad(int f, int i)
+    {
+        std::vector<int> loop{m.faceHe[f], m.heNext[m.faceHe[f]], m.heNext[m.heNext[m.faceHe[f]]], m.hePrev[m.faceHe[f]]};
+        const int a = m.Org(loop[i]), c = m.Org(loop[i + 2]);
+        int hm = home[a];
+        const P3 at = proj.Project((m.pos[a] + m.pos[c]) * 0.5, hm);
+        // the faces around a and c but f, with a and c at `at`
+        std::vector<int> faces;
+        for (int v : {a, c})
+            m.ForEachOutgoing(v, [&](int g) {
+                const int h = m.heFace[g];
+                if (h != f && std::find(faces.begin(), faces.end(), h) == faces.end()) faces.push_back(h);
+            });
+        std::vector<P3> normals;
+        double worstBefore = 1;
+        for (int h : faces) {
+            normals.push_back(m.FaceNormal(h).Normalize());
+            worstBefore = std::min(worstBefore, FaceQualityAt(h, normals.back()));
+        }
+        const P3 oldA = m.pos[a], oldC = m.pos[c];
+        m.pos[a] = m.pos[c] = at;
+        double worstAfter = 1;
+        for (size_t k = 0; k < faces.size(); ++k) worstAfter = std::min(worstAfter, FaceQualityAt(faces[k], normals[k]));
+        // the surface must not flatten: the old nodes stay near the new faces (as in quad formation)
+        double farthest = 0;
+        for (const P3 &old : {oldA, oldC}) {
+            double nearest = 1e300;
+            for (int h : faces) {
+                const int g = m.faceHe[h];
+                const int v0 = m.Org(g), v1 = m.Dst(g), v2 = m.Dst(m.heNext[g]);
+                nearest = std::min(nearest, PointTriangleDistance(old, m.pos[v0], m.pos[v1], m.pos[v2]));
+                if (m.IsQuad(h)) nearest = std::min(nearest, PointTriangleDistance(old, m.pos[v0], m.pos[v2], m.pos[m.Org(m.hePrev[g])]));
+            }
+            farthest = std::max(farthest, nearest);
+        }
+        m.pos[a] = oldA;
+        m.pos[c] = oldC;
+        if (worstAfter < std::min(0.3, worstBefore) || worstAfter <= 0.05 || farthest > 0.1 * meanLength) return false;
+        const int level = m.faceLevel[f];
+        m.ReplaceRegion(loop, {f}, {}, {{i, i + 1, i + 2}, {i, i + 2, (i + 3) % 4}}, level);
+        const int diagonal = m.FindHalfEdge(a, c);
+        if (diagonal >= 0 && m.CollapseEdge(diagonal, at)) {
+            home[a] = hm;
+            return true;
+        }
+        if (diagonal >= 0) m.MergeTriangles(diagonal, level);  // undo the split
+        return false;
+    }
+
+    // Quads still below 0.3 scaled Jacobian: each free node of theirs moves (in its tangent plane,
+    // back onto the input surface) to the nearby position that most raises the worst quality of
+    // its faces. A local pattern search; only moves that raise that worst quality are kept.
+    void ImproveBadQuads()
+    {
+        for (int pass = 0; pass < 4; ++pass) {
+            int moved = 0;
+            for (int f = 0; f < m.FaceCount(); ++f) {
+                if (!m.FaceAlive(f) || !m.IsQuad(f) || m.QuadScaledJacobian(f) >= 0.3) continue;
+                int g = m.faceHe[f];
+                for (int k = 0; k < 4; ++k, g = m.heNext[g])
+                    if (!m.vertFixed[m.Org(g)]) moved += OptimizeNode(m.Org(g));
+            }
+            if (!moved) break;
+        }
+    }
+
+    bool OptimizeNode(int v)
+    {
+        std::vector<int> faces;
+        std::vector<P3> normals;
+        double length = 0;
+        int edges = 0;
+        m.ForEachOutgoing(v, [&](int g) {
+            faces.push_back(m.heFace[g]);
+            normals.push_back(m.FaceNormal(m.heFace[g]).Normalize());
+            length += m.Length(g);
+            ++edges;
+        });
+        if (!edges) return false;
+        length /= edges;
+        auto worst = [&]() {
+            double w = 1e9;
+            for (size_t i = 0; i < faces.size(); ++i) w = std::min(w, FaceQualityAt(faces[i], normals[i]));
+            return w;
+        };
+        // how far the faces' centres are from the input surface: a move must not cut a feature
+        auto deviation = [&]() {
+            double d = 0;
+            for (int f : faces) {
+                P3 c(0, 0, 0);
+                int g = m.faceHe[f];
+                for (int k = 0; k < m.faceSize[f]; ++k, g = m.heNext[g]) c += m.pos[m.Org(g)];
+                c /= m.faceSize[f];
+                int hm = home[v];
+                d = std::max(d, (proj.Project(c, hm) - c).Norm());
+            }
+            return d;
+        };
+        const P3 start = m.pos[v];
+        const double current = worst();
+        const double allowed = std::max(deviation(), 0.05 * meanLength);
+        const P3 n = m.VertexNormal(v);
+        P3 t1 = std::fabs(n[0]) < 0.9 ? P3(1, 0, 0) : P3(0, 1, 0);
+        t1 = (t1 - n * (t1 * n)).Normalize();
+        const P3 t2 = n ^ t1;
+        double best = current;
+        P3 bestPos = start;
+        int bestHome = home[v];
+        for (double step : {0.3, 0.15, 0.07}) {
+            const P3 centre = bestPos;
+            for (int k = 0; k < 8; ++k) {
+                const double angle = k * M_PI / 4;
+                int hm = bestHome;
+                const P3 candidate = proj.Project(centre + (t1 * std::cos(angle) + t2 * std::sin(angle)) * (step * length), hm);
+                m.pos[v] = candidate;
+                const double q = worst();
+                if (q > best + 1e-6 && deviation() <= allowed) { best = q; bestPos = candidate; bestHome = hm; }
+            }
+        }
+        if (best < current + 0.01) {
+            m.pos[v] = start;
+            return false;
+        }
+        m.pos[v] = bestPos;
+        home[v] = bestHome;
+        return true;
+    }
+
+    void ImproveValences()
+    {
+        const std::vector<int> ideal = IdealValences();
         auto dev = [&](int v, int val) { double d = val - ideal[v]; return d * d; };
         for (int pass = 0; pass < 4; ++pass) {
             int turned = 0;

@@ -346,6 +346,32 @@ TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
     EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
 }
 
+TEST(QMorph, CleanUpLowersIrregularNodesAndBadQuads)
+{
+    TMesh base;
+    ASSERT_TRUE(LoadOff(base, MeshDir() + "/elephant.off"));
+    vcg_ext::VSASegmentation<TMesh>::Params vp;
+    vcg_ext::VSASegmentation<TMesh>::Segment(base, vp);
+    SelectRegionBoundaries(base);
+    auto run = [&](bool cleanup, bool rescue) {
+        TMesh m;
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, base);
+        QM::Params p;
+        p.cleanup = cleanup;
+        p.rescueBadQuads = rescue;
+        QM::Result r = RunAndCheckInvariants(m, p);
+        EXPECT_LT(Hausdorff(m, base), 0.005 * base.bbox.Diag());
+        return r;
+    };
+    const QM::Result all = run(true, true), noCleanup = run(false, true), noRescue = run(true, false);
+    EXPECT_GT(all.ops.diagonalCollapses, 0);
+    EXPECT_LT(all.quality.IrregularFraction(), noCleanup.quality.IrregularFraction() - 0.04)
+        << "valence turns and diagonal collapses remove irregular nodes: " << Describe(all) << " vs " << Describe(noCleanup);
+    EXPECT_LT(all.quality.quadsBelow03, 0.75 * noRescue.quality.quadsBelow03)
+        << "re-placing the nodes of bad quads raises them above 0.3";
+    EXPECT_GE(all.quality.minJacobian, noRescue.quality.minJacobian);
+}
+
 TEST(QMorph, WithoutPreservingTheInitialFrontSeamsCloseOntoIt)
 {
     TMesh on, off;
