@@ -247,6 +247,38 @@ public:
         return l > 0 ? n / l : P3(0, 0, 1);
     }
 
+    // Shape of triangle f against unit normal n: 1 equilateral, 0 degenerate, negative folded.
+    double TriangleQuality(int f, const P3 &n) const
+    {
+        const int g = faceHe[f];
+        const P3 A = pos[Org(g)], B = pos[Dst(g)], C = pos[Org(hePrev[g])];
+        const double l2 = (B - A).SquaredNorm() + (C - B).SquaredNorm() + (A - C).SquaredNorm();
+        return l2 > 0 ? 2 * std::sqrt(3.0) * (((B - A) ^ (C - A)) * n) / l2 : -1;
+    }
+
+    // Moves node v to `to` when no face around it folds or gets worse than the worst one now (or
+    // than 0.2); quality(f, n) rates face f against its unit normal from before the move.
+    template <class Quality>
+    bool TryMoveNode(int v, const P3 &to, Quality quality)
+    {
+        std::vector<int> faces;
+        std::vector<P3> normals;
+        ForEachOutgoing(v, [&](int g) {
+            faces.push_back(heFace[g]);
+            const P3 fn = FaceNormal(heFace[g]);
+            const double l = fn.Norm();
+            normals.push_back(l > 0 ? fn / l : P3(0, 0, 0));
+        });
+        double before = 1e9, after = 1e9;
+        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, quality(faces[i], normals[i]));
+        const P3 old = pos[v];
+        pos[v] = to;
+        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, quality(faces[i], normals[i]));
+        if (after > 1e-3 && after >= std::min(before, 0.2)) return true;
+        pos[v] = old;
+        return false;
+    }
+
     // Scaled Jacobian of a quad: min over corners of (e1 x e2).n / (|e1||e2|).
     double QuadScaledJacobian(int f) const
     {

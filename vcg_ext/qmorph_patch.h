@@ -1163,37 +1163,14 @@ private:
 
     double FaceQualityAt(int f, const P3 &n) const
     {
-        if (m.IsQuad(f)) {
-            int g = m.faceHe[f];
-            int a = m.Org(g), b = m.Org(m.heNext[g]), c = m.Org(m.heNext[m.heNext[g]]), d = m.Org(m.hePrev[g]);
-            return QuadQuality(a, b, c, d, n);
-        }
-        int g = m.faceHe[f];
-        P3 A = m.pos[m.Org(g)], B = m.pos[m.Dst(g)], C = m.pos[m.Org(m.hePrev[g])];
-        double l2 = (B - A).SquaredNorm() + (C - B).SquaredNorm() + (A - C).SquaredNorm();
-        double signedArea2 = ((B - A) ^ (C - A)) * n;  // n unit
-        return l2 > 0 ? 2 * std::sqrt(3.0) * signedArea2 / l2 : -1;  // 1 for equilateral
+        if (!m.IsQuad(f)) return m.TriangleQuality(f, n);
+        const int g = m.faceHe[f];
+        return QuadQuality(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]), n);
     }
 
     bool TryMove(int v, const P3 &to)
     {
-        std::vector<int> faces;
-        std::vector<P3> normals;
-        m.ForEachOutgoing(v, [&](int g) {
-            faces.push_back(m.heFace[g]);
-            P3 fn = m.FaceNormal(m.heFace[g]);
-            double l = fn.Norm();
-            normals.push_back(l > 0 ? fn / l : P3(0, 0, 0));
-        });
-        double before = 1e9;
-        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, FaceQualityAt(faces[i], normals[i]));
-        P3 old = m.pos[v];
-        m.pos[v] = to;
-        double after = 1e9;
-        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, FaceQualityAt(faces[i], normals[i]));
-        if (after > 1e-3 && after >= std::min(before, 0.2)) return true;
-        m.pos[v] = old;
-        return false;
+        return m.TryMoveNode(v, to, [&](int f, const P3 &n) { return FaceQualityAt(f, n); });
     }
 };
 

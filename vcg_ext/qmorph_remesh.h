@@ -155,15 +155,6 @@ private:
         }
     }
 
-    // Quality of a triangle against a reference unit normal: 1 equilateral, <= 0 folded.
-    double TriangleQuality(int f, const P3 &n) const
-    {
-        const int g = m.faceHe[f];
-        const P3 A = m.pos[m.Org(g)], B = m.pos[m.Dst(g)], C = m.pos[m.Org(m.hePrev[g])];
-        const double l2 = (B - A).SquaredNorm() + (C - B).SquaredNorm() + (A - C).SquaredNorm();
-        return l2 > 0 ? 2 * std::sqrt(3.0) * (((B - A) ^ (C - A)) * n) / l2 : -1;
-    }
-
     // With the nodes `moved` all at `at`, do the faces around them (but `dying`) keep a fair shape
     // and their orientation?
     bool FacesStayValid(std::initializer_list<int> moved, std::initializer_list<int> dying, const P3 &at)
@@ -181,29 +172,15 @@ private:
         for (int v : moved) old.push_back(m.pos[v]);
         for (int v : moved) m.pos[v] = at;
         bool valid = true;
-        for (size_t i = 0; i < faces.size() && valid; ++i) valid = TriangleQuality(faces[i], normals[i]) > 0.1;
+        for (size_t i = 0; i < faces.size() && valid; ++i) valid = m.TriangleQuality(faces[i], normals[i]) > 0.1;
         size_t k = 0;
         for (int v : moved) m.pos[v] = old[k++];
         return valid;
     }
 
-    // Moves v when no incident triangle folds or gets worse than the worst one now (or 0.2).
     bool TryMove(int v, const P3 &to)
     {
-        std::vector<int> faces;
-        std::vector<P3> normals;
-        m.ForEachOutgoing(v, [&](int g) {
-            faces.push_back(m.heFace[g]);
-            normals.push_back(m.FaceNormal(m.heFace[g]).Normalize());
-        });
-        double before = 1e9, after = 1e9;
-        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, TriangleQuality(faces[i], normals[i]));
-        const P3 old = m.pos[v];
-        m.pos[v] = to;
-        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, TriangleQuality(faces[i], normals[i]));
-        if (after > 1e-3 && after >= std::min(before, 0.2)) return true;
-        m.pos[v] = old;
-        return false;
+        return m.TryMoveNode(v, to, [&](int f, const P3 &n) { return m.TriangleQuality(f, n); });
     }
 };
 

@@ -111,6 +111,23 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
     return r;
 }
 
+// A Debian-package mesh segmented by VSA (defaults), its jaggy region boundaries selected as front.
+bool LoadWithRegionFronts(TMesh &m, const std::string &name)
+{
+    if (!LoadOff(m, MeshDir() + "/" + name + ".off")) return false;
+    vcg_ext::VSASegmentation<TMesh>::Params vp;
+    vcg_ext::VSASegmentation<TMesh>::Segment(m, vp);
+    return SelectRegionBoundaries(m) > 0;
+}
+
+// A Debian-package mesh with its creases (over 40 degrees) selected as front, and a copy of it.
+bool LoadWithCreaseFront(TMesh &m, TMesh &copy, const std::string &name)
+{
+    if (!LoadOff(m, MeshDir() + "/" + name + ".off") || SelectCreases(m, 40) < 100) return false;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(copy, m);
+    return true;
+}
+
 void ExpectAllFacesFacingUp(const TMesh &m)
 {
     for (auto &f : m.face) {
@@ -273,11 +290,8 @@ TEST(QMorph, SphereCutByRegionBoundariesDoesNotShrink)
 
 TEST(QMorph, FandiskWithCreaseFront)
 {
-    TMesh m;
-    ASSERT_TRUE(LoadOff(m, MeshDir() + "/fandisk.off"));
-    ASSERT_GT(SelectCreases(m, 40), 100);
-    TMesh input;
-    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    TMesh m, input;
+    ASSERT_TRUE(LoadWithCreaseFront(m, input, "fandisk"));
     QM::Result r = RunAndCheckInvariants(m);
     EXPECT_GT(r.ops.seams, 0) << "fronts meeting at small angles inside the patches are sewn";
     EXPECT_GT(r.quality.quadAreaFraction, 0.98) << Describe(r);
@@ -289,10 +303,7 @@ TEST(QMorph, FandiskWithCreaseFront)
 TEST(QMorph, ElephantWithJaggyRegionFronts)
 {
     TMesh m;
-    ASSERT_TRUE(LoadOff(m, MeshDir() + "/elephant.off"));
-    vcg_ext::VSASegmentation<TMesh>::Params vp;
-    vcg_ext::VSASegmentation<TMesh>::Segment(m, vp);
-    SelectRegionBoundaries(m);
+    ASSERT_TRUE(LoadWithRegionFronts(m, "elephant"));
     TMesh input;
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
     QM::Result r = RunAndCheckInvariants(m);
@@ -331,11 +342,8 @@ TEST(QMorph, CubeRemeshedToATargetLengthKeepsItsEdgesAsChains)
 
 TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
 {
-    TMesh m;
-    ASSERT_TRUE(LoadOff(m, MeshDir() + "/fandisk.off"));
-    ASSERT_GT(SelectCreases(m, 40), 100);
-    TMesh input;
-    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    TMesh m, input;
+    ASSERT_TRUE(LoadWithCreaseFront(m, input, "fandisk"));
     QM::Params p;
     p.targetEdgeLength = 0.01 * input.bbox.Diag();
     QM::Result r = RunAndCheckInvariants(m, p);
@@ -349,10 +357,7 @@ TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
 TEST(QMorph, CleanUpLowersIrregularNodesAndBadQuads)
 {
     TMesh base;
-    ASSERT_TRUE(LoadOff(base, MeshDir() + "/elephant.off"));
-    vcg_ext::VSASegmentation<TMesh>::Params vp;
-    vcg_ext::VSASegmentation<TMesh>::Segment(base, vp);
-    SelectRegionBoundaries(base);
+    ASSERT_TRUE(LoadWithRegionFronts(base, "elephant"));
     auto run = [&](bool cleanup, bool rescue) {
         TMesh m;
         vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, base);
@@ -375,10 +380,7 @@ TEST(QMorph, CleanUpLowersIrregularNodesAndBadQuads)
 TEST(QMorph, WithoutPreservingTheInitialFrontSeamsCloseOntoIt)
 {
     TMesh on, off;
-    ASSERT_TRUE(LoadOff(on, MeshDir() + "/elephant.off"));
-    vcg_ext::VSASegmentation<TMesh>::Params vp;
-    vcg_ext::VSASegmentation<TMesh>::Segment(on, vp);
-    SelectRegionBoundaries(on);
+    ASSERT_TRUE(LoadWithRegionFronts(on, "elephant"));
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(off, on);
     QM::Result kept = RunAndCheckInvariants(on);
     QM::Params p;
