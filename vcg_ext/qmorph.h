@@ -258,6 +258,7 @@ private:
         std::vector<P3> movedTo;
         std::vector<std::array<int, 5>> outFaces;  // global vertex ids (negative: new vertex -k-1), size in [4]
         std::vector<float> outQuality;
+        std::vector<signed char> outDiagonal;  // per quad: 1 split a-c, 0 split b-d, -1 either (by shape)
         std::vector<char> used(m.vert.size(), 0);
         qmorph::PatchParams pp;
         pp.smoothing = par.smoothing;
@@ -378,9 +379,14 @@ private:
                 if (!mm.FaceAlive(f)) continue;
                 std::array<int, 5> of{mm.faceSize[f], 0, 0, 0, 0};
                 int h = mm.faceHe[f];
-                for (int k = 0; k < mm.faceSize[f]; ++k, h = mm.heNext[h]) of[1 + k] = outId[mm.Org(h)];
+                int corner[4] = {-1, -1, -1, -1};
+                for (int k = 0; k < mm.faceSize[f]; ++k, h = mm.heNext[h]) {
+                    corner[k] = mm.Org(h);
+                    of[1 + k] = outId[corner[k]];
+                }
                 outFaces.push_back(of);
                 outQuality.push_back(patchQuality);
+                outDiagonal.push_back(mm.faceSize[f] == 4 ? PreferredDiagonal(mm, surface, home, corner) : -1);
                 if (mm.faceSize[f] == 4) ++res.quads; else ++res.triangles;
             }
             for (size_t i = s; i < e; ++i)
@@ -388,7 +394,7 @@ private:
             s = e;
         }
         Progress(99, "Q-Morph: writing the quad mesh");
-        WriteBack(newPoints, vertexNewPos, movedTo, outFaces, outQuality, used, hasQuality);
+        WriteBack(newPoints, vertexNewPos, movedTo, outFaces, outQuality, outDiagonal, used, hasQuality);
         res.quality = QuadQuality::Measure(QuadQuality::FromFauxMesh(m));
     }
 
@@ -452,6 +458,7 @@ private:
     // Replaces the faces of m by the new polygons (quads as faux pairs), front edges selected.
     void WriteBack(const std::vector<P3> &outPoints, const std::vector<int> &vertexNewPos, const std::vector<P3> &movedTo,
                    const std::vector<std::array<int, 5>> &outFaces, const std::vector<float> &outQuality,
+                   const std::vector<signed char> &outDiagonal,
                    const std::vector<char> &used, bool hasQuality)
     {
         // The selection is kept as vertex pairs: flips do not carry per-edge flags, and the
@@ -498,10 +505,12 @@ private:
                 continue;
             }
             int d = resolve(of[4]);
-            // the diagonal giving the better pair of triangles (the larger smallest angle)
+            // the diagonal that follows the input surface, else the one giving the better pair of
+            // triangles (the larger smallest angle)
             P3 pa = P3::Construct(m.vert[a].cP()), pb = P3::Construct(m.vert[b].cP()), pc = P3::Construct(m.vert[c].cP()),
                pd = P3::Construct(m.vert[d].cP());
-            bool acDiagonal = std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
+            bool acDiagonal = outDiagonal[i] >= 0 ? outDiagonal[i] == 1
+                                                  : std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
             if (sides.count(Key(a, c))) acDiagonal = false;
             else if (sides.count(Key(b, d))) acDiagonal = true;
             sides.insert(acDiagonal ? Key(a, c) : Key(b, d));  // two quads around a doublet node must not share a diagonal
@@ -523,6 +532,30 @@ private:
         if (vcg::tri::HasFFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFace(m);
+    }
+
+    // A non-planar quad is written as two triangles: the diagonal whose midpoint lies clearly
+    // nearer the input surface (1: corners 0-2, 0: corners 1-3) keeps the shape; -1 when the
+    // quad is about flat and either will do.
+    static int PreferredDiagonal(const qmorph::MixedMesh &mm, const SurfaceProjector &surface, const std::vector<int> &home,
+                                 const int (&corner)[4])
+    {
+        auto distance = [&](const P3 &q, int near) {
+            int hm = near < int(home.size()) ? home[near] : 0;
+            return (surface.Project(q, hm) - q).Norm();
+        };
+        // the farthest of the diagonal's midpoint and the two triangles' centres
+        auto offSurface = [&](int i) {
+            const P3 &u = mm.pos[corner[i]], &w = mm.pos[corner[(i + 2) % 4]];
+            const P3 &x = mm.pos[corner[(i + 1) % 4]], &y = mm.pos[corner[(i + 3) % 4]];
+            return std::max({distance((u + w) * 0.5, corner[i]), distance((u + w + x) / 3.0, corner[(i + 1) % 4]),
+                             distance((u + w + y) / 3.0, corner[(i + 3) % 4])});
+        };
+        const double ac = offSurface(0), bd = offSurface(1);
+        double side = 0;
+        for (int k = 0; k < 4; ++k) side += (mm.pos[corner[(k + 1) % 4]] - mm.pos[corner[k]]).Norm();
+        if (std::fabs(ac - bd) <= 0.02 * side / 4) return -1;
+        return ac < bd ? 1 : 0;
     }
 
     static double MinAngle(const P3 &a, const P3 &b, const P3 &c)
