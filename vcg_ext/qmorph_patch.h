@@ -41,6 +41,8 @@ struct PatchParams {
     double seamAngle = M_PI / 6;        // front edges meeting at a smaller angle are sewn together
     bool transitions = true;            // Owen's transition seam and transition split
     double transitionRatio = 2.5;       // front edges differing more than this in length need a transition
+    double transitionMinLength = 1.5;   // ... when the longer one is also this long (times the patch's mean
+                                        // input edge): short edges get plain seams, no cascade of splits
     bool preserveInitialFront = true;   // false: a seam may also close onto an initial front edge
                                         // (its nodes never move: the other node joins them)
     bool cleanup = true;                // topological clean-up: valence turns and diagonal collapses
@@ -508,7 +510,7 @@ private:
         if (hInitial && nInitial) return false;
         if ((hInitial || nInitial) && p.preserveInitialFront) return false;
         const double lh = m.Length(h), ln = m.Length(n);
-        if (p.transitions && std::max(lh, ln) > p.transitionRatio * std::min(lh, ln)) {
+        if (p.transitions && std::max(lh, ln) > p.transitionRatio * std::min(lh, ln) && std::max(lh, ln) > p.transitionMinLength * meanLength) {
             const bool split = ln > lh ? !nInitial && TransitionSplit(n, lh / ln, true) : !hInitial && TransitionSplit(h, 1 - ln / lh, false);
             if (!split) return false;
             ++stats.transitionSeams;
@@ -608,7 +610,7 @@ private:
         if (m.heTwin[h] < 0) return false;
         const int prev = front.PrevFront(h), next = front.NextFront(h);
         if (prev < 0 || next < 0) return false;
-        if (m.Length(h) <= p.transitionRatio * std::max(m.Length(prev), m.Length(next))) return false;
+        if (m.Length(h) <= p.transitionRatio * std::max(m.Length(prev), m.Length(next)) || m.Length(h) <= p.transitionMinLength * meanLength) return false;
         return TransitionSplit(h, 0.5, true) || TransitionSplit(h, 0.5, false);
     }
 

@@ -176,23 +176,37 @@ TEST(QMorph, PlanarDomainsAllQuadsWhenEvenOneTriangleWhenOdd)
     }
 }
 
+// Strips with 4 to 12 times finer edges below than above: rows of very different sizes meet, where
+// Owen's transition seams and splits apply. Each output keeps the invariants and an even parity;
+// over the 12 strips, transitions leave fewer triangles and better worst quads than plain seams.
 TEST(QMorph, GradedStripsUseTransitionsAndKeepTheParity)
 {
     struct Case { int bottom, top; unsigned seed; };
-    int transitions = 0;
-    for (const Case &c : {Case{32, 4, 2}, Case{32, 8, 1}, Case{48, 6, 1}, Case{16, 4, 3}, Case{24, 8, 2}}) {
-        SCOPED_TRACE(std::to_string(c.bottom) + " below, " + std::to_string(c.top) + " above");
-        TMesh m;
-        MakeGradedStrip(m, c.bottom, c.top, 0.3, c.seed);
-        const int boundary = vcg_ext::MeshChecks<TMesh>::Inspect(m).boundaryEdges;
-        ASSERT_EQ(boundary, c.bottom + c.top + 6);
-        QM::Result r = RunAndCheckInvariants(m);
-        transitions += r.ops.transitionSeams + r.ops.transitionSplits;
-        EXPECT_EQ(r.triangles % 2, 0) << "a transition turns one front edge into three: the parity stays even";
-        EXPECT_GT(r.quality.meanJacobian, 0.6) << Describe(r);
-        ExpectAllFacesFacingUp(m);
+    const Case cases[] = {{32, 4, 2}, {32, 8, 1}, {48, 6, 1}, {16, 4, 3}, {24, 8, 2}, {24, 8, 1},
+                          {48, 4, 2}, {32, 6, 1}, {48, 8, 1}, {32, 4, 3}, {24, 4, 2}, {16, 6, 2}};
+    int transitions = 0, triangles[2] = {0, 0};
+    double worstQuad[2] = {0, 0};
+    for (const Case &c : cases) {
+        SCOPED_TRACE(std::to_string(c.bottom) + " below, " + std::to_string(c.top) + " above, seed " + std::to_string(c.seed));
+        for (bool on : {false, true}) {
+            TMesh m;
+            MakeGradedStrip(m, c.bottom, c.top, 0.3, c.seed);
+            ASSERT_EQ(vcg_ext::MeshChecks<TMesh>::Inspect(m).boundaryEdges, c.bottom + c.top + 6);
+            QM::Params p;
+            p.transitions = on;
+            QM::Result r = RunAndCheckInvariants(m, p);
+            triangles[on] += r.triangles;
+            worstQuad[on] += r.quality.minJacobian / 12;
+            if (!on) continue;
+            transitions += r.ops.transitionSeams + r.ops.transitionSplits;
+            EXPECT_EQ(r.triangles % 2, 0) << "a transition turns one front edge into three: the parity stays even";
+            EXPECT_GT(r.quality.meanJacobian, 0.65) << Describe(r);
+            ExpectAllFacesFacingUp(m);
+        }
     }
-    EXPECT_GT(transitions, 3) << "rows of edge length 1/8 meeting rows of 1/2 need transitions";
+    EXPECT_GT(transitions, 10) << "rows of edge length 1/8 meeting rows of 1/2 need transitions";
+    EXPECT_LT(triangles[1], triangles[0]) << "transitions leave fewer triangles than plain seams";
+    EXPECT_GT(worstQuad[1], worstQuad[0] + 0.03) << "and the worst quads are better";
 }
 
 TEST(QMorph, CubeWithItsTwelveEdgesSelectedGivesSixQuadPatches)
