@@ -194,7 +194,7 @@ TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
 
 // Filters 1-4 with their defaults on a Debian-package mesh; remeshFactor > 0: Q-Morph re-meshes
 // first, to that times the mean edge length of the split mesh. Checks the output contract.
-static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0)
+static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0, bool preserveFront = true, int *trianglesLeft = nullptr)
 {
     PluginHarness h;
     ASSERT_NE(h.LoadOff(MeshDir() + "/" + mesh + ".off"), nullptr);
@@ -214,6 +214,7 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0)
             for (int k = 0; k < 3; ++k) sum += vcg::Distance(f.cP(k), f.cP((k + 1) % 3));
         par.setValue("TargetEdgeLength", AbsPercValue(float(remeshFactor * sum / (3.0 * mm->cm.fn))));
     }
+    par.setValue("PreserveInitialFront", BoolValue(preserveFront));
     FilterRun r = h.Apply(kQMorph, par);
     ASSERT_TRUE(r.ok) << r.error;
     std::smatch mq;
@@ -221,6 +222,7 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0)
     for (auto &l : r.log) all += l + "\n";
     ASSERT_TRUE(std::regex_search(all, mq, std::regex("(\\d+) quads, (\\d+) triangles left \\(([0-9.]+)% of the area"))) << all;
     const int quads = std::stoi(mq[1]), tris = std::stoi(mq[2]);
+    if (trianglesLeft) *trianglesLeft = tris;
     EXPECT_GT(double(quads) / (quads + tris), 0.95);
     EXPECT_GE(std::stod(mq[3]), 95.0);
     EXPECT_TRUE(r.Logged(" 0 inverted"));
@@ -244,3 +246,13 @@ TEST(QMorphPlugin, WholePipelineOnFandisk) { RunWholePipeline("fandisk"); }
 // Coarse re-meshing of the armadillo's thin, hairpin-shaped region fronts: two patches could make the
 // same chord between front nodes (a non-manifold edge) unless such chords are refused.
 TEST(QMorphPlugin, WholePipelineOnArmadilloRemeshedCoarsely) { RunWholePipeline("armadillo", 3.0); }
+
+// 'Preserve initial front' off: seams may close onto the front (the front itself stays selected and
+// unchanged, checked inside), so fewer triangles are left than with the paper's behaviour.
+TEST(QMorphPlugin, WholePipelineOnElephantWithoutPreservingTheFront)
+{
+    int kept = 0, sewn = 0;
+    RunWholePipeline("elephant", 0, true, &kept);
+    RunWholePipeline("elephant", 0, false, &sewn);
+    EXPECT_LT(sewn, kept);
+}
