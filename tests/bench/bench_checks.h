@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -190,6 +191,53 @@ inline std::vector<PosEdge> EdgesByPosition(const TMesh &m, bool selectedOnly)
     std::sort(s.begin(), s.end());
     s.erase(std::unique(s.begin(), s.end()), s.end());
     return s;
+}
+
+// With re-meshing the front edges are cut into pieces: the selected output edges must lie on the
+// selected input edges and cover each exactly. Returns the input edges not covered exactly plus the
+// output edges lying on none (0: every front curve is a chain of selected output edges). A hash
+// grid over the input edges' midpoints keeps it linear.
+inline long FrontChainMismatches(const std::vector<PosEdge> &input, const std::vector<PosEdge> &output)
+{
+    typedef vcg::Point3d D3;
+    auto end = [](const PosEdge &e, int k) { return D3(e[3 * k], e[3 * k + 1], e[3 * k + 2]); };
+    double cell = 0;
+    for (const PosEdge &e : input) cell = std::max(cell, (end(e, 1) - end(e, 0)).Norm());
+    if (input.empty() || !(cell > 0)) return long(input.size() + output.size());
+    auto key = [&](const D3 &p) {
+        return std::array<long, 3>{long(std::floor(p[0] / cell)), long(std::floor(p[1] / cell)), long(std::floor(p[2] / cell))};
+    };
+    std::map<std::array<long, 3>, std::vector<int>> grid;
+    for (size_t i = 0; i < input.size(); ++i) grid[key((end(input[i], 0) + end(input[i], 1)) * 0.5)].push_back(int(i));
+    std::vector<double> covered(input.size(), 0);
+    long stray = 0;
+    for (const PosEdge &o : output) {
+        const D3 a = end(o, 0), b = end(o, 1), mid = (a + b) * 0.5;
+        const std::array<long, 3> c = key(mid);
+        int found = -1;
+        for (long dx = -1; dx <= 1 && found < 0; ++dx)
+            for (long dy = -1; dy <= 1 && found < 0; ++dy)
+                for (long dz = -1; dz <= 1 && found < 0; ++dz) {
+                    auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it == grid.end()) continue;
+                    for (int i : it->second) {
+                        const D3 p = end(input[i], 0), d = end(input[i], 1) - p;
+                        auto on = [&](const D3 &q) {
+                            const double t = ((q - p) * d) / d.SquaredNorm();
+                            return t > -1e-6 && t < 1 + 1e-6 && (p + d * t - q).Norm() < 1e-5 * d.Norm();
+                        };
+                        if (on(a) && on(b)) { found = i; break; }
+                    }
+                }
+        if (found < 0) ++stray;
+        else covered[found] += (b - a).Norm();
+    }
+    long uncovered = 0;
+    for (size_t i = 0; i < input.size(); ++i) {
+        const double len = (end(input[i], 1) - end(input[i], 0)).Norm();
+        uncovered += std::fabs(covered[i] - len) > 1e-4 * len;
+    }
+    return uncovered + stray;
 }
 
 // ---------------------------------------------------------------- geometry

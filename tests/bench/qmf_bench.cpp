@@ -620,7 +620,10 @@ void RunJob(const Job &job, const Options &o)
     const std::vector<PosEdge> edgesAfter = EdgesByPosition(work, false), selAfter = EdgesByPosition(work, true);
     long lost = 0;
     for (const PosEdge &x : frontBefore) lost += !std::binary_search(edgesAfter.begin(), edgesAfter.end(), x);
-    const bool frontKept = lost == 0 && selAfter == frontBefore;
+    // re-meshing cuts front edges into pieces: then each must be a chain of selected output edges
+    const long mismatches = gRemeshFactor > 0 ? FrontChainMismatches(frontBefore, selAfter) : 0;
+    if (gRemeshFactor > 0) lost = mismatches;
+    const bool frontKept = gRemeshFactor > 0 ? mismatches == 0 : lost == 0 && selAfter == frontBefore;
     Progress(label, "Hausdorff distance");
     auto th = Clock::now();
     const double hd = Hausdorff(work, input) / diag;
@@ -640,7 +643,9 @@ void RunJob(const Job &job, const Options &o)
     Emit(T_CHECKS, {label, Ms(r.Total()), Fmt("%.3f", 100 * hd),
                     Fmt("%+.3f", volumeIn != 0 ? 100 * (volumeOut - volumeIn) / std::fabs(volumeIn) : 0.0), closedText,
                     YesNo(genusKept) + Fmt(" (%ld -> %ld)", eulerIn, qm.euler),
-                    frontKept ? "yes" : Fmt("NO (%ld lost, selection %s)", lost, selAfter == frontBefore ? "same" : "changed"),
+                    frontKept ? (gRemeshFactor > 0 ? "yes (as chains)" : "yes")
+                              : gRemeshFactor > 0 ? Fmt("NO (%ld front edges not chains)", lost)
+                                                  : Fmt("NO (%ld lost, selection %s)", lost, selAfter == frontBefore ? "same" : "changed"),
                     Fmt("%.0f", peakAll)});
     const double below = q.quads ? double(q.quadsBelow03) / q.quads : 0;
     const bool bars[] = {q.quadAreaFraction >= 0.95, q.quadCountFraction >= 0.90, q.invertedQuads == 0 && q.minJacobian > 0,
