@@ -108,10 +108,10 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     const vcg_ext::QuadQualityReport &q = r.quality;
     Log("Q-Morph: %d patches (%d without front), %d initial front edges (%d of them unselected sharp creases); %d quads, %d triangles left "
         "(%.1f%% of the area in quads); %d quads formed, %d by templates, %d seams, %d transition seams, %d transition "
-        "splits, %d triangle pairs merged, %d doublets removed, %d edges turned and %d quads collapsed for valence; %d swaps, "
-        "%d splits; %.3f s%s",
+        "splits, %d triangle pairs merged, %d doublets removed, %d edges turned, %d quads collapsed and %d opened for "
+        "valence; %d swaps, %d splits; %.3f s%s",
         r.patches, r.patchesWithoutFront, r.initialFrontEdges, r.creaseEdges, r.quads, r.triangles, 100 * q.quadAreaFraction,
-        r.ops.quadsFormed, r.ops.templates, r.ops.seams, r.ops.transitionSeams, r.ops.transitionSplits, r.ops.pairedTriangles, r.ops.doublets, r.ops.valenceTurns, r.ops.diagonalCollapses, r.ops.swaps, r.ops.splits, r.seconds,
+        r.ops.quadsFormed, r.ops.templates, r.ops.seams, r.ops.transitionSeams, r.ops.transitionSplits, r.ops.pairedTriangles, r.ops.doublets, r.ops.valenceTurns, r.ops.diagonalCollapses, r.ops.quadsOpened, r.ops.swaps, r.ops.splits, r.seconds,
         qUtf8Printable(layerNote));
     if (p.targetEdgeLength > 0)
         Log("Q-Morph re-meshing to edge length %g: %d front edges cut into pieces; %d splits, %d collapses, %d flips",

@@ -354,6 +354,7 @@ private:
                 res.ops.transitionSeams += st.transitionSeams;
                 res.ops.transitionSplits += st.transitionSplits;
                 res.ops.diagonalCollapses += st.diagonalCollapses;
+                res.ops.quadsOpened += st.quadsOpened;
             }
             // write back: vertex ids (global, or new), positions of moved interior nodes
             std::vector<int> outId(mm.VertexCount(), 0);

@@ -568,6 +568,35 @@ public:
         return true;
     }
 
+    // Quad open (the inverse of a diagonal collapse): interior node v, all of whose faces are
+    // quads, is split in two along its edges to a = Dst(out[i]) and b = Dst(out[j]) (out: v's
+    // outgoing half-edges counter-clockwise, i < j). v keeps the faces from out[i] to out[j-1] and
+    // moves to p1; a new node at p2 takes the others; the new quad (a v b v') fills the gap.
+    // Returns the new node.
+    int OpenQuad(int v, int i, int j, const P3 &p1, const P3 &p2, int level)
+    {
+        std::vector<int> out;
+        ForEachOutgoing(v, [&](int h) { out.push_back(h); });
+        const int n = int(out.size());
+        const int gi = out[i], gj = out[j], ti = heTwin[gi], tj = heTwin[gj];
+        const int a = Dst(gi), b = Dst(gj);
+        const int w = AddVertex(p2);
+        pos[v] = p1;
+        for (int k = j; k != i; k = (k + 1) % n) heVert[out[k]] = w;  // faces F_j .. F_{i-1} go to w
+        const int q = AddFace({a, v, b, w}, 4);
+        faceLevel[q] = level;
+        const int q0 = faceHe[q], q1 = heNext[q0], q2 = heNext[q1], q3 = heNext[q2];  // a->v, v->b, b->w, w->a
+        Link(gi, q0);
+        Link(ti, q3);
+        Link(tj, q1);
+        Link(gj, q2);
+        SetVertexHe(v, gi);
+        SetVertexHe(w, gj);
+        SetVertexHe(a, vertHe[a]);
+        SetVertexHe(b, vertHe[b]);
+        return w;
+    }
+
     // Removes a valence-2 interior node shared by two quads (a "doublet"): the quads become one.
     bool DissolveDoublet(int v)
     {

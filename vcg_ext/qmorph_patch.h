@@ -54,7 +54,7 @@ struct PatchParams {
 struct PatchStats {
     int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
     int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0, seams = 0;
-    int transitionSeams = 0, transitionSplits = 0, diagonalCollapses = 0;
+    int transitionSeams = 0, transitionSplits = 0, diagonalCollapses = 0, quadsOpened = 0;
 };
 
 class PatchMesher
@@ -114,6 +114,7 @@ public:
         if (p.cleanup) {
             ImproveValences();
             CollapseQuadDiagonals();
+            OpenQuads();
             DissolveDoublets();
             ImproveValences();
         }
@@ -957,6 +958,87 @@ private:
             stats.diagonalCollapses += collapsed;
             if (!collapsed) break;
         }
+    }
+
+    // Quad open, the inverse of a diagonal collapse: an interior node whose neighbours a and b,
+    // `span` edges apart around it, are short of edges (typically valence 5 with two valence-3
+    // neighbours two edges apart) is split in two with a new quad between a and b: valences
+    // 5, 3, 3 become 3, 4, 4, 4. Each half moves a third of the way toward its own neighbours and
+    // back onto the surface; every quad around must stay fair.
+    void OpenQuads()
+    {
+        const std::vector<int> ideal = IdealValences();
+        auto dev = [&](int v, int val) { double d = val - (v < int(ideal.size()) ? ideal[v] : 4); return d * d; };
+        auto devInside = [](int val) { double d = val - 4; return d * d; };
+        for (int pass = 0; pass < 2; ++pass) {
+            int opened = 0;
+            const int count = m.VertexCount();
+            for (int v = 0; v < count && m.VertexCount() < vertexCap; ++v) {
+                if (!m.vertAlive[v] || m.vertFixed[v] || m.OnBoundary(v)) continue;
+                std::vector<int> out;
+                bool allQuads = true;
+                m.ForEachOutgoing(v, [&](int g) {
+                    out.push_back(g);
+                    allQuads = allQuads && m.IsQuad(m.heFace[g]);
+                });
+                const int n = int(out.size());
+                if (!allQuads || n < 5 || n > 8) continue;
+                double bestGain = 0.5;
+                int bestI = -1, bestSpan = 0;
+                for (int i = 0; i < n; ++i)
+                    for (int span = 2; span <= n - 2; ++span) {
+                        const int a = m.Dst(out[i]), b = m.Dst(out[(i + span) % n]);
+                        if (!m.DistinctNodes({v, a, b})) continue;
+                        const int va = m.Valence(a), vb = m.Valence(b);
+                        const double before = devInside(n) + dev(a, va) + dev(b, vb);
+                        const double after = devInside(span + 1) + devInside(n - span + 1) + dev(a, va + 1) + dev(b, vb + 1);
+                        if (before - after > bestGain) { bestGain = before - after; bestI = i; bestSpan = span; }
+                    }
+                if (bestI >= 0 && OpenQuadAt(v, out, bestI, (bestI + bestSpan) % n)) ++opened;
+            }
+            stats.quadsOpened += opened;
+            if (!opened) break;
+        }
+    }
+
+    bool OpenQuadAt(int v, const std::vector<int> &out, int i, int j)
+    {
+        const int n = int(out.size());
+        // the two halves sit on either side of the line a-b, around v's foot on it: the new quad
+        // (a v b v') is then a rhombus with diagonals a-b and v-v'
+        const int a = m.Dst(out[i]), b = m.Dst(out[j]);
+        const P3 normal = m.VertexNormal(v), ab = m.pos[b] - m.pos[a];
+        const double t = std::max(0.25, std::min(0.75, ((m.pos[v] - m.pos[a]) * ab) / ab.SquaredNorm()));
+        const P3 centre = (m.pos[v] + (m.pos[a] + ab * t)) * 0.5;
+        P3 side = normal ^ ab;
+        P3 own(0, 0, 0);  // v's own neighbours (strictly between a and b) tell which side is its
+        for (int k = (i + 1) % n; k != j; k = (k + 1) % n) own += m.pos[m.Dst(out[k])] - centre;
+        if (!(side.Norm() > 0)) return false;
+        side.Normalize();
+        if (side * own < 0) side = -side;
+        const double half = 0.3 * ab.Norm();
+        int home1 = home[v], home2 = home[v];
+        const P3 p1 = proj.Project(centre + side * half, home1), p2 = proj.Project(centre - side * half, home2);
+        // every quad around (v replaced by its half's position) and the new quad must be fair
+        auto fair = [&](int k, const P3 &at) {
+            const int g = out[k];
+            const P3 n0 = m.FaceNormal(m.heFace[g]);
+            const std::array<P3, 4> q{at, m.pos[m.Dst(g)], m.pos[m.Dst(m.heNext[g])], m.pos[m.Org(m.hePrev[g])]};
+            const double before = QuadQuality({m.pos[v], q[1], q[2], q[3]}, n0);
+            return QuadQuality(q, n0) >= std::min(0.3, before);
+        };
+        for (int k = i; k != j; k = (k + 1) % n)
+            if (!fair(k, p1)) return false;
+        for (int k = j; k != i; k = (k + 1) % n)
+            if (!fair(k, p2)) return false;
+        if (QuadQuality({m.pos[a], p1, m.pos[b], p2}, normal) < 0.3) return false;
+        const int w = m.OpenQuad(v, i, j, p1, p2, m.faceLevel[m.heFace[out[i]]]);
+        home.resize(m.VertexCount(), 0);
+        home[v] = home1;
+        home[w] = home2;
+        for (int it = 0; it < 2; ++it)
+            for (int x : {v, w}) SmoothNode(x);
+        return true;
     }
 
     // Collapses quad f along its diagonal from corner i to corner i+2 (the second joins the first).

@@ -384,6 +384,7 @@ TEST(QMorph, CleanUpLowersIrregularNodesAndBadQuads)
     };
     const QM::Result all = run(true, true), noCleanup = run(false, true), noRescue = run(true, false);
     EXPECT_GT(all.ops.diagonalCollapses, 0);
+    EXPECT_GT(all.ops.quadsOpened, 0);
     EXPECT_LT(all.quality.IrregularFraction(), noCleanup.quality.IrregularFraction() - 0.04)
         << "valence turns and diagonal collapses remove irregular nodes: " << Describe(all) << " vs " << Describe(noCleanup);
     EXPECT_LT(all.quality.quadsBelow03, 0.75 * noRescue.quality.quadsBelow03)
@@ -402,6 +403,55 @@ TEST(QMorph, WithoutPreservingTheInitialFrontSeamsCloseOntoIt)
     QM::Result sewn = RunAndCheckInvariants(off, p);  // the front edges themselves are still all kept
     EXPECT_GT(sewn.ops.seams, kept.ops.seams) << "seams where one edge is initial front are now allowed";
     EXPECT_LE(sewn.triangles, kept.triangles) << "each such seam closes a triangle the paper would leave";
+}
+
+// Quad open on the centre of a 2x2 quad grid: the centre becomes two nodes with a new quad between
+// two opposite neighbours; the half-edge mesh stays consistent (twins, 4-cycles, Euler of a disk).
+TEST(QMorph, QuadOpenKeepsAConsistentHalfEdgeMesh)
+{
+    typedef vcg_ext::qmorph::P3 D3;
+    std::vector<D3> pts;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x) pts.push_back(D3(x, y, 0));
+    std::vector<std::array<int, 3>> tris;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            const int a = 3 * y + x, b = a + 1, c = a + 4, d = a + 3;
+            tris.push_back({a, b, c});
+            tris.push_back({a, c, d});
+        }
+    vcg_ext::qmorph::MixedMesh m;
+    m.Build(pts, tris);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) m.MergeTriangles(m.FindHalfEdge(3 * y + x, 3 * y + x + 4), 0);
+    std::vector<int> out;
+    m.ForEachOutgoing(4, [&](int h) { out.push_back(h); });
+    ASSERT_EQ(out.size(), 4u);
+    const int a = m.Dst(out[0]), b = m.Dst(out[2]);
+    const int w = m.OpenQuad(4, 0, 2, D3(1.1, 1.1, 0), D3(0.9, 0.9, 0), 0);
+    int faces = 0, halfEdges = 0, vertices = 0;
+    for (int f = 0; f < m.FaceCount(); ++f) faces += m.FaceAlive(f) && m.IsQuad(f);
+    for (int v = 0; v < m.VertexCount(); ++v) vertices += m.vertAlive[v];
+    for (int h = 0; h < m.HalfEdgeCount(); ++h) {
+        if (!m.HeAlive(h)) continue;
+        ++halfEdges;
+        EXPECT_EQ(m.heNext[m.heNext[m.heNext[m.heNext[h]]]], h) << "every face is a quad";
+        const int t = m.heTwin[h];
+        if (t < 0) continue;
+        EXPECT_EQ(m.heTwin[t], h);
+        EXPECT_EQ(m.Org(t), m.Dst(h));
+        EXPECT_EQ(m.Dst(t), m.Org(h));
+    }
+    EXPECT_EQ(faces, 5);
+    EXPECT_EQ(vertices, 10);
+    int boundary = 0;
+    for (int h = 0; h < m.HalfEdgeCount(); ++h) boundary += m.HeAlive(h) && m.heTwin[h] < 0;
+    const int edges = (halfEdges + boundary) / 2;
+    EXPECT_EQ(vertices - edges + faces, 1) << "still a disk";
+    EXPECT_EQ(m.Valence(4), 3);
+    EXPECT_EQ(m.Valence(w), 3);
+    EXPECT_EQ(m.Valence(a), 4) << "the two opened neighbours gain an edge";
+    EXPECT_EQ(m.Valence(b), 4);
 }
 
 TEST(QMorph, BadInputIsRefusedAndLeftUnchanged)
