@@ -111,13 +111,15 @@ public:
         PairLeftoverTriangles(p.migrationMinJacobian);
         MigrateTrianglesIntoPairs();
         DissolveDoublets();
-        if (p.cleanup) {
-            ImproveValences();
-            CollapseQuadDiagonals();
-            OpenQuads();
-            DissolveDoublets();
-            ImproveValences();
-        }
+        if (p.cleanup)
+            for (int round = 0; round < 2; ++round) {  // a smoothing sweep between rounds: better shapes let more operations pass
+                ImproveValences();
+                CollapseQuadDiagonals();
+                OpenQuads();
+                DissolveDoublets();
+                ImproveValences();
+                if (p.smoothing) SmoothAll();
+            }
         if (p.smoothing) {
             for (int it = 0; it < p.finalSmoothing; ++it) SmoothAll();
             if (p.rescueBadQuads) ImproveBadQuads();
@@ -1032,6 +1034,10 @@ private:
         for (int k = j; k != i; k = (k + 1) % n)
             if (!fair(k, p2)) return false;
         if (QuadQuality({m.pos[a], p1, m.pos[b], p2}, normal) < 0.3) return false;
+        // the surface must not flatten: v's old place stays near the new quad (as in quad formation)
+        if (std::min(PointTriangleDistance(m.pos[v], m.pos[a], p1, m.pos[b]), PointTriangleDistance(m.pos[v], m.pos[a], m.pos[b], p2)) >
+            0.1 * meanLength)
+            return false;
         const int w = m.OpenQuad(v, i, j, p1, p2, m.faceLevel[m.heFace[out[i]]]);
         home.resize(m.VertexCount(), 0);
         home[v] = home1;
