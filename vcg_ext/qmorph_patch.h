@@ -118,7 +118,7 @@ public:
                 OpenQuads();
                 DissolveDoublets();
                 ImproveValences();
-                if (p.smoothing) SmoothAll();
+                if (p.smoothing) SmoothAll(true);
             }
         if (p.smoothing) {
             for (int it = 0; it < p.finalSmoothing; ++it) SmoothAll();
@@ -1227,10 +1227,30 @@ private:
     }
 
     // ---- smoothing ------------------------------------------------------------------------------
-    void SmoothAll()
+    // keepToSurface: a move is undone when it takes one of the node's edges farther from the input
+    // surface than it was (and than a twentieth of the mean input edge).
+    void SmoothAll(bool keepToSurface = false)
     {
         for (int v = 0; v < m.VertexCount(); ++v)
-            if (m.vertAlive[v] && !m.vertFixed[v]) SmoothNode(v);
+            if (m.vertAlive[v] && !m.vertFixed[v]) {
+                if (!keepToSurface) { SmoothNode(v); continue; }
+                const P3 old = m.pos[v];
+                const double before = EdgeDeviation(v);
+                SmoothNode(v);
+                if (EdgeDeviation(v) > std::max(before, 0.05 * meanLength)) m.pos[v] = old;  // an edge would cut a bend
+            }
+    }
+
+    // How far the midpoints of v's edges are from the input surface.
+    double EdgeDeviation(int v) const
+    {
+        double d = 0;
+        m.ForEachOutgoing(v, [&](int g) {
+            const P3 mid = (m.pos[v] + m.pos[m.Dst(g)]) * 0.5;
+            int hm = home[v];
+            d = std::max(d, (proj.Project(mid, hm) - mid).Norm());
+        });
+        return d;
     }
 
     // Laplacian target, moved only in the tangent plane, projected back onto the input surface;
