@@ -425,13 +425,13 @@ private:
             auto it = sharedOfEdge.find(key);
             if (it == sharedOfEdge.end()) {
                 it = sharedOfEdge.emplace(key, int(sharedOut.size())).first;
+                std::vector<int> both;  // the patches on the edge hold its points
+                std::set_intersection(patchesOfVertex[lo].begin(), patchesOfVertex[lo].end(), patchesOfVertex[hi].begin(),
+                                      patchesOfVertex[hi].end(), std::back_inserter(both));
                 std::vector<int> chain{lo};
                 for (int k = 1; k < n; ++k) {
                     newPoints.push_back(plo + (phi - plo) * (double(k) / n));
                     sharedOut.push_back(-int(newPoints.size()));
-                    std::vector<int> both;  // the patches on the edge hold its points
-                    std::set_intersection(patchesOfVertex[lo].begin(), patchesOfVertex[lo].end(), patchesOfVertex[hi].begin(),
-                                          patchesOfVertex[hi].end(), std::back_inserter(both));
                     sharedPatches.push_back(both);
                     chain.push_back(sharedOut.back());
                 }
@@ -440,19 +440,20 @@ private:
                     for (size_t k = 0; k + 1 < chain.size(); ++k) frontChains.push_back({chain[k], chain[k + 1]});
                 ++res.frontEdgesSubdivided;
             }
-            std::vector<P3> points;  // from the half-edge's origin to its end
-            for (int k = 1; k < n; ++k) points.push_back(plo + (phi - plo) * (double(ga == lo ? k : n - k) / n));
-            std::vector<int> made = qmorph::PatchRemesher::SubdivideBoundaryEdge(mm, home, h, points);
+            // the edge's points from the half-edge's origin to its end
+            std::vector<int> order;
+            std::vector<P3> points;
             for (int k = 0; k < n - 1; ++k) {
-                const int point = it->second + (ga == lo ? k : n - 2 - k);
-                sharedOfLocal[made[k]] = point;
-                keys.resize(mm.VertexCount(), 0);
-                keys[made[k]] = INT_MIN / 2 + point;  // copies of one point (both sides of a slit) share it
+                order.push_back(it->second + (ga == lo ? k : n - 2 - k));
+                points.push_back(newPoints[-sharedOut[order.back()] - 1]);
+            }
+            const std::vector<int> made = qmorph::PatchRemesher::SubdivideBoundaryEdge(mm, home, h, points);
+            keys.resize(mm.VertexCount(), 0);
+            for (int k = 0; k < n - 1; ++k) {
+                sharedOfLocal[made[k]] = order[k];
+                keys[made[k]] = INT_MIN / 2 + order[k];  // copies of one point (both sides of a slit) share it
             }
         }
-        keys.resize(mm.VertexCount(), 0);
-        for (int v = int(globalOf.size()); v < mm.VertexCount(); ++v)
-            if (!sharedOfLocal.count(v)) keys[v] = mm.vertKey[v];
         mm.SetKeys(keys);
     }
 

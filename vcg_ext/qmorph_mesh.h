@@ -256,26 +256,56 @@ public:
         return l2 > 0 ? 2 * std::sqrt(3.0) * (((B - A) ^ (C - A)) * n) / l2 : -1;
     }
 
+    // Unit normal of face f (zero for a degenerate face).
+    P3 UnitFaceNormal(int f) const
+    {
+        const P3 fn = FaceNormal(f);
+        const double l = fn.Norm();
+        return l > 0 ? fn / l : P3(0, 0, 0);
+    }
+
+    // Worst quality(f, n) over `faces` now and with the `moved` nodes all at `at`; each face is
+    // rated against its unit normal from before the move. Positions are restored.
+    template <class Quality>
+    std::pair<double, double> WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces,
+                                                   Quality quality)
+    {
+        std::vector<P3> normals;
+        for (int f : faces) normals.push_back(UnitFaceNormal(f));
+        double before = 1e9, after = 1e9;
+        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, quality(faces[i], normals[i]));
+        std::vector<P3> old;
+        for (int v : moved) old.push_back(pos[v]);
+        for (int v : moved) pos[v] = at;
+        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, quality(faces[i], normals[i]));
+        size_t k = 0;
+        for (int v : moved) pos[v] = old[k++];
+        return {before, after};
+    }
+
+    // The faces around the given nodes, each once, but the `dying` ones (about to vanish).
+    std::vector<int> FacesAround(std::initializer_list<int> nodes, std::initializer_list<int> dying = {}) const
+    {
+        std::vector<int> faces;
+        for (int v : nodes)
+            ForEachOutgoing(v, [&](int g) {
+                const int f = heFace[g];
+                if (std::find(dying.begin(), dying.end(), f) == dying.end() && std::find(faces.begin(), faces.end(), f) == faces.end())
+                    faces.push_back(f);
+            });
+        return faces;
+    }
+
     // Moves node v to `to` when no face around it folds or gets worse than the worst one now (or
     // than 0.2); quality(f, n) rates face f against its unit normal from before the move.
     template <class Quality>
     bool TryMoveNode(int v, const P3 &to, Quality quality)
     {
-        std::vector<int> faces;
-        std::vector<P3> normals;
-        ForEachOutgoing(v, [&](int g) {
-            faces.push_back(heFace[g]);
-            const P3 fn = FaceNormal(heFace[g]);
-            const double l = fn.Norm();
-            normals.push_back(l > 0 ? fn / l : P3(0, 0, 0));
-        });
-        double before = 1e9, after = 1e9;
-        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, quality(faces[i], normals[i]));
-        const P3 old = pos[v];
-        pos[v] = to;
-        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, quality(faces[i], normals[i]));
-        if (after > 1e-3 && after >= std::min(before, 0.2)) return true;
-        pos[v] = old;
+        const std::pair<double, double> worst = WorstQualityIfMoved({v}, to, FacesAround({v}), quality);
+        if (worst.second > 1e-3 && worst.second >= std::min(worst.first, 0.2)) {
+            pos[v] = to;
+            return true;
+        }
         return false;
     }
 

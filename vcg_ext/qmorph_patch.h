@@ -536,21 +536,8 @@ private:
             std::fabs((m.pos[keep] - at) * m.VertexNormal(keep)) > limit)
             return false;
         // the faces that stay around both nodes must stay valid with the joined node at `at`
-        const int dead1 = m.heFace[h0], dead2 = m.heFace[m.heTwin[h0]];
-        std::vector<int> faces;
-        for (int v : {keep, gone})
-            m.ForEachOutgoing(v, [&](int g) {
-                int f = m.heFace[g];
-                if (f != dead1 && f != dead2 && std::find(faces.begin(), faces.end(), f) == faces.end()) faces.push_back(f);
-            });
-        std::vector<P3> normals;
-        for (int f : faces) normals.push_back(m.FaceNormal(f).Normalize());
-        const P3 oldKeep = m.pos[keep], oldGone = m.pos[gone];
-        m.pos[keep] = m.pos[gone] = at;
-        bool valid = true;
-        for (size_t i = 0; i < faces.size() && valid; ++i) valid = FaceQualityAt(faces[i], normals[i]) > 0.05;
-        m.pos[keep] = oldKeep;
-        m.pos[gone] = oldGone;
+        const std::vector<int> faces = m.FacesAround({keep, gone}, {m.heFace[h0], m.heFace[m.heTwin[h0]]});
+        bool valid = m.WorstQualityIfMoved({keep, gone}, at, faces, [&](int f, const P3 &n) { return FaceQualityAt(f, n); }).second > 0.05;
         if (m.vertFixed[keep])  // gone's edges move to keep: none may become a new chord between front nodes
             m.ForEachOutgoing(gone, [&](int g) { if (m.Dst(g) != keep && m.NewChordBetweenFrontNodes(keep, m.Dst(g))) valid = false; });
         if (!valid || !m.CollapseEdge(h0, at, !p.preserveInitialFront)) return false;
@@ -920,6 +907,13 @@ private:
     // ideal (4 inside; on the patch boundary, one more than the number of right angles that fit
     // in the node's angle) and the two new quads are not worse than 0.3 scaled Jacobian (or than
     // the old ones).
+    // Squared distance of valence `val` at node v from its ideal (4 for nodes made after `ideal`).
+    static double ValenceDeviation(const std::vector<int> &ideal, int v, int val)
+    {
+        const double d = val - (v < int(ideal.size()) ? ideal[v] : 4);
+        return d * d;
+    }
+
     // Ideal valence per node: 4 inside; on the patch boundary, one more than the number of right
     // angles that fit in the node's angle.
     std::vector<int> IdealValences() const
@@ -941,7 +935,7 @@ private:
     void CollapseQuadDiagonals()
     {
         const std::vector<int> ideal = IdealValences();
-        auto dev = [&](int v, int val) { double d = val - ideal[v]; return d * d; };
+        auto dev = [&](int v, int val) { return ValenceDeviation(ideal, v, val); };
         for (int pass = 0; pass < 3; ++pass) {
             int collapsed = 0;
             for (int f = 0; f < m.FaceCount(); ++f) {
@@ -970,8 +964,8 @@ private:
     void OpenQuads()
     {
         const std::vector<int> ideal = IdealValences();
-        auto dev = [&](int v, int val) { double d = val - (v < int(ideal.size()) ? ideal[v] : 4); return d * d; };
-        auto devInside = [](int val) { double d = val - 4; return d * d; };
+        auto dev = [&](int v, int val) { return ValenceDeviation(ideal, v, val); };
+        auto devInside = [](int val) { return ValenceDeviation({}, 0, val); };
         for (int pass = 0; pass < 2; ++pass) {
             int opened = 0;
             const int count = m.VertexCount();
@@ -1055,23 +1049,12 @@ private:
         int hm = home[a];
         const P3 at = proj.Project((m.pos[a] + m.pos[c]) * 0.5, hm);
         // the faces around a and c but f, with a and c at `at`
-        std::vector<int> faces;
-        for (int v : {a, c})
-            m.ForEachOutgoing(v, [&](int g) {
-                const int h = m.heFace[g];
-                if (h != f && std::find(faces.begin(), faces.end(), h) == faces.end()) faces.push_back(h);
-            });
-        std::vector<P3> normals;
-        double worstBefore = 1;
-        for (int h : faces) {
-            normals.push_back(m.FaceNormal(h).Normalize());
-            worstBefore = std::min(worstBefore, FaceQualityAt(h, normals.back()));
-        }
+        const std::vector<int> faces = m.FacesAround({a, c}, {f});
+        const std::pair<double, double> worst =
+            m.WorstQualityIfMoved({a, c}, at, faces, [&](int g, const P3 &n) { return FaceQualityAt(g, n); });
+        // the surface must not flatten: the old nodes stay near the new faces (as in quad formation)
         const P3 oldA = m.pos[a], oldC = m.pos[c];
         m.pos[a] = m.pos[c] = at;
-        double worstAfter = 1;
-        for (size_t k = 0; k < faces.size(); ++k) worstAfter = std::min(worstAfter, FaceQualityAt(faces[k], normals[k]));
-        // the surface must not flatten: the old nodes stay near the new faces (as in quad formation)
         double farthest = 0;
         for (const P3 &old : {oldA, oldC}) {
             double nearest = 1e300;
@@ -1085,7 +1068,7 @@ private:
         }
         m.pos[a] = oldA;
         m.pos[c] = oldC;
-        if (worstAfter < std::min(0.3, worstBefore) || worstAfter <= 0.05 || farthest > 0.1 * meanLength) return false;
+        if (worst.second < std::min(0.3, worst.first) || worst.second <= 0.05 || farthest > 0.1 * meanLength) return false;
         const int level = m.faceLevel[f];
         m.ReplaceRegion(loop, {f}, {}, {{i, i + 1, i + 2}, {i, i + 2, (i + 3) % 4}}, level);
         const int diagonal = m.FindHalfEdge(a, c);
@@ -1179,7 +1162,7 @@ private:
     void ImproveValences()
     {
         const std::vector<int> ideal = IdealValences();
-        auto dev = [&](int v, int val) { double d = val - ideal[v]; return d * d; };
+        auto dev = [&](int v, int val) { return ValenceDeviation(ideal, v, val); };
         for (int pass = 0; pass < 4; ++pass) {
             int turned = 0;
             for (int h = 0; h < m.HalfEdgeCount(); ++h) {

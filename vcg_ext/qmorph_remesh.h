@@ -110,7 +110,10 @@ private:
             // no new chord between front nodes that another patch could also make
             if (m.vertFixed[x])
                 m.ForEachOutgoing(y, [&](int g) { if (m.Dst(g) != x && m.NewChordBetweenFrontNodes(x, m.Dst(g))) ok = false; });
-            if (!ok || !FacesStayValid({x, y}, {m.heFace[h], m.heFace[m.heTwin[h]]}, at)) continue;
+            if (!ok) continue;
+            const std::vector<int> around = m.FacesAround({x, y}, {m.heFace[h], m.heFace[m.heTwin[h]]});
+            if (m.WorstQualityIfMoved({x, y}, at, around, [&](int f, const P3 &n) { return m.TriangleQuality(f, n); }).second <= 0.1)
+                continue;
             if (m.CollapseEdge(h, at)) ++stats.collapses;
         }
     }
@@ -153,29 +156,6 @@ private:
             move -= n * (move * n);
             TryMove(v, proj.Project(m.pos[v] + move, home[v]));
         }
-    }
-
-    // With the nodes `moved` all at `at`, do the faces around them (but `dying`) keep a fair shape
-    // and their orientation?
-    bool FacesStayValid(std::initializer_list<int> moved, std::initializer_list<int> dying, const P3 &at)
-    {
-        std::vector<int> faces;
-        for (int v : moved)
-            m.ForEachOutgoing(v, [&](int g) {
-                const int f = m.heFace[g];
-                if (std::find(dying.begin(), dying.end(), f) == dying.end() && std::find(faces.begin(), faces.end(), f) == faces.end())
-                    faces.push_back(f);
-            });
-        std::vector<P3> normals;
-        for (int f : faces) normals.push_back(m.FaceNormal(f).Normalize());
-        std::vector<P3> old;
-        for (int v : moved) old.push_back(m.pos[v]);
-        for (int v : moved) m.pos[v] = at;
-        bool valid = true;
-        for (size_t i = 0; i < faces.size() && valid; ++i) valid = m.TriangleQuality(faces[i], normals[i]) > 0.1;
-        size_t k = 0;
-        for (int v : moved) m.pos[v] = old[k++];
-        return valid;
     }
 
     bool TryMove(int v, const P3 &to)
