@@ -2,6 +2,7 @@
 // and Hausdorff distance, each computed independently of the algorithm.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -204,6 +205,8 @@ TEST(QMorph, GradedStripsUseTransitionsAndKeepTheParity)
             ExpectAllFacesFacingUp(m);
         }
     }
+    std::printf("graded strips: %d transitions; triangles %d with, %d without; mean worst quad %.2f with, %.2f without\n",
+                transitions, triangles[1], triangles[0], worstQuad[1], worstQuad[0]);
     EXPECT_GT(transitions, 10) << "rows of edge length 1/8 meeting rows of 1/2 need transitions";
     EXPECT_LT(triangles[1], triangles[0]) << "transitions leave fewer triangles than plain seams";
     EXPECT_GT(worstQuad[1], worstQuad[0] + 0.03) << "and the worst quads are better";
