@@ -16,22 +16,6 @@
 using namespace qmf_test;
 
 namespace {
-const QString kQMorph = "Q-Morph Quad Conversion";
-
-// A cube with its 12 edges selected on both faces (4 cells per side edge).
-MeshModel *AddSelectedCube(PluginHarness &h)
-{
-    TMesh t;
-    MakeCube(t, 4, 0.3f, 2);
-    MeshModel *mm = h.AddCopyOf(t);
-    mm->updateDataMask(MeshModel::MM_FACEFACETOPO);
-    vcg::tri::UpdateTopology<CMeshO>::FaceFace(mm->cm);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm->cm);
-    for (auto &f : mm->cm.face)
-        for (int k = 0; k < 3; ++k)
-            if (vcg::Angle(f.N(), f.FFp(k)->N()) > M_PI / 4) f.SetFaceEdgeS(k);
-    return mm;
-}
 
 int CountFaceEdges(const CMeshO &m, bool (CFaceO::*test)(int) const)
 {
@@ -51,7 +35,7 @@ void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::st
 TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
 {
     PluginHarness h;
-    MeshModel *mm = AddSelectedCube(h);
+    MeshModel *mm = AddCubeWithCreasesSelected(h);
     const int selected = CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS);
     ASSERT_EQ(selected, 2 * 12 * 4);
     RichParameterList par = h.Defaults(kQMorph);
@@ -93,7 +77,7 @@ TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
 TEST(QMorphPlugin, RemeshingFirstCutsTheFrontIntoChainsOfTheTargetLength)
 {
     PluginHarness h;
-    MeshModel *mm = AddSelectedCube(h);  // side 2, cube edges of 4 mesh edges of length 0.5
+    MeshModel *mm = AddCubeWithCreasesSelected(h);  // side 2, cube edges of 4 mesh edges of length 0.5
     RichParameterList par = h.Defaults(kQMorph);
     par.setValue("TargetEdgeLength", AbsPercValue(0.25f));
     FilterRun r = h.Apply(kQMorph, par);
@@ -153,20 +137,20 @@ TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
     }
     {
         PluginHarness h;
-        AddSelectedCube(h);
+        AddCubeWithCreasesSelected(h);
         h.doc.mm()->cm.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
         ExpectRefused(h, h.Defaults(kQMorph), "NaN");
     }
     for (int it : {-1, 101}) {
         PluginHarness h;
-        AddSelectedCube(h);
+        AddCubeWithCreasesSelected(h);
         RichParameterList par = h.Defaults(kQMorph);
         par.setValue("SmoothingIterations", IntValue(it));
         ExpectRefused(h, par, "smoothing iterations");
     }
     {
         PluginHarness h;
-        AddSelectedCube(h);
+        AddCubeWithCreasesSelected(h);
         RichParameterList par = h.Defaults(kQMorph);
         par.setValue("ExportPath", FileValue("/tmp/quads.stl"));
         ExpectRefused(h, par, ".obj, .off or .ply");
@@ -175,7 +159,7 @@ TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
     }
     {
         PluginHarness h;
-        AddSelectedCube(h);
+        AddCubeWithCreasesSelected(h);
         RichParameterList par = h.Defaults(kQMorph);
         par.setValue("TargetEdgeLength", AbsPercValue(-0.1f));
         ExpectRefused(h, par, "target edge length must be");

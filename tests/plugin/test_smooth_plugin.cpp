@@ -13,8 +13,6 @@
 using namespace qmf_test;
 
 namespace {
-const QString kVsa = "Segment by Variational Shape Approximation";
-const QString kSmooth = "Smooth Region Boundaries";
 
 RichParameterList Defaults(PluginHarness &h, const QString &filter) { return h.Defaults(filter); }
 FilterRun RunFilter(PluginHarness &h, const QString &filter) { return h.Apply(filter, Defaults(h, filter)); }

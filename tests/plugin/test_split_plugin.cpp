@@ -13,9 +13,6 @@ using namespace qmf_test;
 using namespace qmf_test::split;
 
 namespace {
-const QString kVsa = "Segment by Variational Shape Approximation";
-const QString kSmooth = "Smooth Region Boundaries";
-const QString kSplit = "Split Triangles along Front";
 
 // An edge-only layer (not current) holding the polyline.
 MeshModel *AddPolylineLayer(PluginHarness &h, const TMesh &poly, const QString &name)

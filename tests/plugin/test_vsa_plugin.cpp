@@ -8,7 +8,6 @@
 using namespace qmf_test;
 
 namespace {
-const QString kVsa = "Segment by Variational Shape Approximation";
 
 void MakeOctahedron(PluginHarness &h)
 {

@@ -17,7 +17,15 @@
 #include <wrap/gl/glu_tesselator.h>  // import_off.h tessellates with GLU when GL is included
 #include <wrap/io_trimesh/import_off.h>
 
+#include "test_mesh.h"
+
 namespace qmf_test {
+
+// The filters' names: the scripting API (.mlx files refer to them).
+const QString kVsa = "Segment by Variational Shape Approximation";
+const QString kSmooth = "Smooth Region Boundaries";
+const QString kSplit = "Split Triangles along Front";
+const QString kQMorph = "Q-Morph Quad Conversion";
 
 // Everything a filter could change on a layer, in comparable form.
 struct MeshSnapshot {
@@ -158,6 +166,22 @@ inline void ExpectRefused(PluginHarness &h, const QString &filter, const RichPar
     EXPECT_TRUE(r.Logged(r.error)) << "the error must also be in the log (meshlabserver prints only the log)";
     EXPECT_TRUE(MeshSnapshot::Of(*h.doc.mm()) == before) << "the mesh changed";
     EXPECT_EQ(h.doc.size(), layers) << "a layer was added or removed";
+}
+
+// A cube (4 cells per side edge, jittered) with its 12 edges selected on both faces, as MeshLab's
+// 'Select Crease Edges' leaves it: an initial front for Q-Morph alone.
+inline MeshModel *AddCubeWithCreasesSelected(PluginHarness &h)
+{
+    TMesh t;
+    MakeCube(t, 4, 0.3f, 2);
+    MeshModel *mm = h.AddCopyOf(t);
+    mm->updateDataMask(MeshModel::MM_FACEFACETOPO);
+    vcg::tri::UpdateTopology<CMeshO>::FaceFace(mm->cm);
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(mm->cm);
+    for (auto &f : mm->cm.face)
+        for (int k = 0; k < 3; ++k)
+            if (vcg::Angle(f.N(), f.FFp(k)->N()) > M_PI / 4) f.SetFaceEdgeS(k);
+    return mm;
 }
 
 }  // namespace qmf_test
