@@ -3,7 +3,9 @@
 #  - the installed libmeshlab-common.so, meshlab and meshlabserver binaries and system plugins.
 set(MESHLAB_SOURCE_DIR "${PROJECT_SOURCE_DIR}/.deps/meshlab-src" CACHE PATH
     "MeshLab source tree holding src/common and vcglib (scripts/setup.sh fetches it)")
-set(MESHLAB_LIB_DIR "/usr/lib/x86_64-linux-gnu/meshlab" CACHE PATH "Installed MeshLab library folder")
+# Debian installs MeshLab's libraries under the multiarch folder (e.g. lib/x86_64-linux-gnu).
+set(QMF_LIB_ARCH_DIR "lib/${CMAKE_LIBRARY_ARCHITECTURE}")
+set(MESHLAB_LIB_DIR "/usr/${QMF_LIB_ARCH_DIR}/meshlab" CACHE PATH "Installed MeshLab library folder")
 set(MESHLAB_BIN_DIR "/usr/bin" CACHE PATH "Folder of the installed meshlab and meshlabserver binaries")
 
 if(NOT EXISTS "${MESHLAB_SOURCE_DIR}/vcglib/vcg/complex/complex.h")

@@ -1,18 +1,19 @@
 # Builds a private MeshLab prefix so tests never touch /usr (run with cmake -P):
 #   STAGE/bin/{meshlab,meshlabserver}                          copies (a symlinked binary would
 #                                                              resolve its plugin folder to /usr)
-#   STAGE/lib/x86_64-linux-gnu/meshlab/libmeshlab-common.so    symlink (found through RUNPATH)
-#   STAGE/lib/x86_64-linux-gnu/meshlab/plugins/*.so            symlinks to the system plugins,
+#   STAGE/ARCH_LIB_DIR/meshlab/libmeshlab-common.so            symlink (found through RUNPATH)
+#   STAGE/ARCH_LIB_DIR/meshlab/plugins/*.so                    symlinks to the system plugins,
 #                                                              except any installed copy of ours,
 #                                                              plus a symlink to the freshly built plugin
-# Inputs: STAGE, MESHLAB_LIB_DIR, MESHLAB_BIN_DIR, PLUGIN (path of the built plugin .so).
-foreach(var STAGE MESHLAB_LIB_DIR MESHLAB_BIN_DIR PLUGIN)
+# Inputs: STAGE, ARCH_LIB_DIR (the binaries' multiarch library folder, e.g. lib/x86_64-linux-gnu:
+# their RUNPATH points there), MESHLAB_LIB_DIR, MESHLAB_BIN_DIR, PLUGIN (path of the built plugin .so).
+foreach(var STAGE ARCH_LIB_DIR MESHLAB_LIB_DIR MESHLAB_BIN_DIR PLUGIN)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "stage_meshlab.cmake: ${var} is not set")
   endif()
 endforeach()
 
-set(lib "${STAGE}/lib/x86_64-linux-gnu/meshlab")
+set(lib "${STAGE}/${ARCH_LIB_DIR}/meshlab")
 file(MAKE_DIRECTORY "${STAGE}/bin" "${lib}/plugins")
 foreach(exe meshlab meshlabserver)
   if(EXISTS "${MESHLAB_BIN_DIR}/${exe}")

@@ -4,9 +4,9 @@
 #include <QFileInfo>
 
 #include "front_edges_layer.h"
-#include <vcg_ext/polygon_export.h>
+#include <vcg_ext/common/polygon_export.h>
 #include <vcg_ext/qmorph.h>
-#include <vcg_ext/region_ids.h>
+#include <vcg_ext/common/region_ids.h>
 
 typedef vcg_ext::QMorph<CMeshO> QMorphCMeshO;
 

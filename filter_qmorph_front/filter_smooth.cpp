@@ -3,7 +3,7 @@
 
 #include <vcg_ext/geodesic_straightening.h>
 #include <vcg_ext/mesh_checks.h>
-#include <vcg_ext/region_ids.h>
+#include <vcg_ext/common/region_ids.h>
 
 typedef vcg_ext::RegionBoundarySmoothing<CMeshO> Smoothing;
 

@@ -2,7 +2,7 @@
 #include "filter_qmorph_front.h"
 
 #include <vcg_ext/mesh_checks.h>
-#include <vcg_ext/region_ids.h>
+#include <vcg_ext/common/region_ids.h>
 #include <vcg_ext/vsa_segmentation.h>
 
 typedef vcg_ext::VSASegmentation<CMeshO> VSA;

@@ -4,7 +4,7 @@
 #define FILTER_QMORPH_FRONT_EDGES_LAYER_H
 
 #include <common/meshmodel.h>
-#include <vcg_ext/front_edges.h>
+#include <vcg_ext/common/front_edges.h>
 
 // Replaces the content of the layer (created, not current, when missing) by the given edges of
 // mm's mesh. Returns the layer; `existed` tells whether it was refreshed rather than created.

@@ -7,7 +7,7 @@
 
 #include "plugin_harness.h"
 #include "split_test_meshes.h"
-#include <vcg_ext/front_edges.h>
+#include <vcg_ext/common/front_edges.h>
 
 using namespace qmf_test;
 using namespace qmf_test::split;

@@ -21,7 +21,7 @@
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/complex/append.h>
 #include <vcg/space/index/grid_static_ptr.h>
-#include <vcg_ext/front_edges.h>
+#include <vcg_ext/common/front_edges.h>
 #include <vcg_ext/mesh_checks.h>
 
 namespace qmf_test {

@@ -6,7 +6,7 @@
 
 #include "boundary_test_meshes.h"
 #include "test_mesh.h"
-#include <vcg_ext/region_boundary.h>
+#include <vcg_ext/boundary/region_boundary.h>
 
 using namespace qmf_test;
 using namespace qmf_test::boundary;

@@ -14,8 +14,8 @@
 #include <cmath>
 #include <vector>
 
-#include "qmorph_mesh.h"
-#include "surface_projector.h"
+#include <vcg_ext/qmorph/mixed_mesh.h>
+#include <vcg_ext/qmorph/surface_projector.h>
 
 namespace vcg_ext {
 namespace qmorph {

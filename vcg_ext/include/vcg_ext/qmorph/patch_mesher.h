@@ -15,17 +15,17 @@
 // initial front (the patch boundary) is never swapped, split or moved.
 // Afterwards: leftover triangle pairs merged where the quad is good, doublets dissolved, and a
 // final tangent-plane smoothing.
-#ifndef VCG_EXT_QMORPH_PATCH_H
-#define VCG_EXT_QMORPH_PATCH_H
+#ifndef VCG_EXT_QMORPH_PATCH_MESHER_H
+#define VCG_EXT_QMORPH_PATCH_MESHER_H
 
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
 
-#include "qmorph_front.h"
-#include "qmorph_mesh.h"
-#include "surface_projector.h"
+#include <vcg_ext/qmorph/front.h>
+#include <vcg_ext/qmorph/mixed_mesh.h>
+#include <vcg_ext/qmorph/surface_projector.h>
 
 namespace vcg_ext {
 namespace qmorph {

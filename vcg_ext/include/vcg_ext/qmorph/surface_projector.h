@@ -1,8 +1,8 @@
 // Projection of points onto a fixed triangle surface (the input surface of one patch) by walking
 // over its triangles from a "home" triangle each tracked point remembers. Smoothing moves nodes a
 // little at a time, so the walk is a few steps: O(1) per query, no spatial index.
-#ifndef VCG_EXT_SURFACE_PROJECTOR_H
-#define VCG_EXT_SURFACE_PROJECTOR_H
+#ifndef VCG_EXT_QMORPH_SURFACE_PROJECTOR_H
+#define VCG_EXT_QMORPH_SURFACE_PROJECTOR_H
 
 #include <algorithm>
 #include <array>

@@ -12,9 +12,9 @@
 
 #include <vcg/complex/complex.h>
 
-#include "embedding_adjacency.h"
-#include "embedding_result.h"
-#include "region_ids.h"
+#include <vcg_ext/embedding/adjacency.h>
+#include <vcg_ext/embedding/result.h>
+#include <vcg_ext/common/region_ids.h>
 
 namespace vcg_ext {
 namespace embedding {

@@ -15,10 +15,10 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
-#include "embedding_adjacency.h"
-#include "embedding_relabel.h"
-#include "embedding_result.h"
-#include "front_edges.h"
+#include <vcg_ext/embedding/adjacency.h>
+#include <vcg_ext/embedding/relabel.h>
+#include <vcg_ext/embedding/result.h>
+#include <vcg_ext/common/front_edges.h>
 
 namespace vcg_ext {
 namespace embedding {

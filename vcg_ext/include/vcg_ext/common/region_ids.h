@@ -1,7 +1,7 @@
 // Region ids stored in per-face quality: reading them back (they must be integral) and colouring
 // faces by region. Shared by the segmentation, the boundary smoothing, the splitting and Q-Morph.
-#ifndef VCG_EXT_REGION_IDS_H
-#define VCG_EXT_REGION_IDS_H
+#ifndef VCG_EXT_COMMON_REGION_IDS_H
+#define VCG_EXT_COMMON_REGION_IDS_H
 
 #include <algorithm>
 #include <cmath>

@@ -43,7 +43,7 @@
 
 #include <vcg/complex/complex.h>
 
-#include "region_boundary.h"
+#include <vcg_ext/boundary/region_boundary.h>
 
 namespace vcg_ext {
 

@@ -13,7 +13,7 @@
 #include <queue>
 #include <vector>
 
-#include "qmorph_mesh.h"
+#include <vcg_ext/qmorph/mixed_mesh.h>
 
 namespace vcg_ext {
 namespace qmorph {

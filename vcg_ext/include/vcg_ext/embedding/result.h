@@ -13,8 +13,8 @@
 
 #include <vcg/complex/complex.h>
 
-#include "embedding_adjacency.h"
-#include "embedding_locate.h"
+#include <vcg_ext/embedding/adjacency.h>
+#include <vcg_ext/embedding/locate.h>
 
 namespace vcg_ext {
 namespace embedding {

@@ -5,8 +5,8 @@
 //
 // Faces are counter-clockwise seen from outside. Elements are never reused once deleted, so an
 // index kept in a queue either still names the same element or is dead (checked on use).
-#ifndef VCG_EXT_QMORPH_MESH_H
-#define VCG_EXT_QMORPH_MESH_H
+#ifndef VCG_EXT_QMORPH_MIXED_MESH_H
+#define VCG_EXT_QMORPH_MIXED_MESH_H
 
 #include <algorithm>
 #include <array>

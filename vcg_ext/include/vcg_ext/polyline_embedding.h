@@ -25,9 +25,9 @@
 
 #include <vcg/complex/complex.h>
 
-#include "embedding_apply.h"
-#include "embedding_plan.h"
-#include "embedding_result.h"
+#include <vcg_ext/embedding/apply.h>
+#include <vcg_ext/embedding/plan.h>
+#include <vcg_ext/embedding/result.h>
 
 namespace vcg_ext {
 

@@ -16,8 +16,8 @@
 #include <cmath>
 #include <vector>
 
-#include "embedding_adjacency.h"
-#include "embedding_locate.h"
+#include <vcg_ext/embedding/adjacency.h>
+#include <vcg_ext/embedding/locate.h>
 
 namespace vcg_ext {
 namespace embedding {

@@ -1,15 +1,15 @@
 // Writes a polygon mesh (quads as real 4-node faces) to OBJ, OFF or PLY (ASCII, by extension).
 // MeshLab 2020.09 cannot do it from meshlabserver: its OFF polygon export writes vertex flags in
 // place of indices and the PLY exporter writes triangles.
-#ifndef VCG_EXT_POLYGON_EXPORT_H
-#define VCG_EXT_POLYGON_EXPORT_H
+#ifndef VCG_EXT_COMMON_POLYGON_EXPORT_H
+#define VCG_EXT_COMMON_POLYGON_EXPORT_H
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <string>
 
-#include "quad_quality.h"
+#include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
 

@@ -16,11 +16,11 @@
 
 #include <vcg/complex/complex.h>
 
-#include "embedding_adjacency.h"
-#include "embedding_face_split.h"
-#include "embedding_locate.h"
-#include "embedding_result.h"
-#include "embedding_trace.h"
+#include <vcg_ext/embedding/adjacency.h>
+#include <vcg_ext/embedding/face_split.h>
+#include <vcg_ext/embedding/locate.h>
+#include <vcg_ext/embedding/result.h>
+#include <vcg_ext/embedding/trace.h>
 
 namespace vcg_ext {
 namespace embedding {

@@ -23,7 +23,7 @@
 #include <vcg/complex/complex.h>
 #include <vcg/space/index/grid_util.h>
 
-#include "embedding_adjacency.h"
+#include <vcg_ext/embedding/adjacency.h>
 
 namespace vcg_ext {
 namespace embedding {

@@ -28,10 +28,10 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/flag.h>
 
-#include "mesh_checks.h"
-#include "qmorph_patch.h"
-#include "qmorph_remesh.h"
-#include "quad_quality.h"
+#include <vcg_ext/mesh_checks.h>
+#include <vcg_ext/qmorph/patch_mesher.h>
+#include <vcg_ext/qmorph/remesh.h>
+#include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
 

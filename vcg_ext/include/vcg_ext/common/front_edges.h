@@ -3,8 +3,8 @@
 // the face flags (meshlabserver -m ff). Helpers to clear, set and read them back, and to draw them
 // as an edge-only mesh (MeshLab 2020.09 draws no selected face-edges, only edge layers).
 // Index based: no FF/VF adjacency needed; each call is one pass over the faces.
-#ifndef VCG_EXT_FRONT_EDGES_H
-#define VCG_EXT_FRONT_EDGES_H
+#ifndef VCG_EXT_COMMON_FRONT_EDGES_H
+#define VCG_EXT_COMMON_FRONT_EDGES_H
 
 #include <algorithm>
 #include <cstdint>

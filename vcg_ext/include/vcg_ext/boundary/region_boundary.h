@@ -11,8 +11,8 @@
 //                      the longest boundary with (on a copy of the labels).
 //
 // Shared by the boundary smoothing (filter 2), the splitting (filter 3) and Q-Morph (filter 4).
-#ifndef VCG_EXT_REGION_BOUNDARY_H
-#define VCG_EXT_REGION_BOUNDARY_H
+#ifndef VCG_EXT_BOUNDARY_REGION_BOUNDARY_H
+#define VCG_EXT_BOUNDARY_REGION_BOUNDARY_H
 
 #include <algorithm>
 #include <array>
