@@ -44,6 +44,8 @@
 #include <vcg/complex/complex.h>
 
 #include <vcg_ext/boundary/region_boundary.h>
+#include <vcg_ext/common/edge_layer.h>
+#include <vcg_ext/mesh_checks.h>
 
 namespace vcg_ext {
 
@@ -804,11 +806,10 @@ public:
         if (!r.error.empty()) return r;
         if (faceRegion.size() != m.face.size()) { r.error = "one region id per face is needed"; return r; }
         if (m.fn == 0) { r.error = "the mesh has no faces"; return r; }
-        for (const auto &v : m.vert)
-            if (!v.IsD() && !(std::isfinite(double(v.cP()[0])) && std::isfinite(double(v.cP()[1])) && std::isfinite(double(v.cP()[2])))) {
-                r.error = "the mesh has vertices with NaN or infinite coordinates";
-                return r;
-            }
+        if (MeshChecks<MeshType>::CountNonFiniteVertices(m)) {
+            r.error = "the mesh has vertices with NaN or infinite coordinates";
+            return r;
+        }
         if (cb) cb(0, "Region boundaries: mesh topology");
         r.topology.Build(m);
         auto t1 = Clock::now();
@@ -908,20 +909,7 @@ public:
 
     // Fills an (empty) vcg mesh with the polylines as vertices and edges (an edge-only mesh).
     template <class EdgeMeshType>
-    static void BuildEdgeMesh(const Polylines &pl, EdgeMeshType &out)
-    {
-        typedef typename EdgeMeshType::CoordType Coord;
-        out.Clear();
-        if (pl.points.empty()) return;
-        auto vi = vcg::tri::Allocator<EdgeMeshType>::AddVertices(out, pl.points.size());
-        for (size_t i = 0; i < pl.points.size(); ++i, ++vi) vi->P() = Coord::Construct(pl.points[i]);
-        if (pl.segments.empty()) return;
-        auto ei = vcg::tri::Allocator<EdgeMeshType>::AddEdges(out, pl.segments.size());
-        for (size_t i = 0; i < pl.segments.size(); ++i, ++ei) {
-            ei->V(0) = &out.vert[pl.segments[i][0]];
-            ei->V(1) = &out.vert[pl.segments[i][1]];
-        }
-    }
+    static void BuildEdgeMesh(const Polylines &pl, EdgeMeshType &out) { WriteEdgeLayer(pl.points, pl.segments, out); }
 
 private:
     // The boundary chain as vertex points. Corners are fixed; a closed loop is pinned at three

@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <vector>
 
 #include <vcg/complex/complex.h>
+
+#include <vcg_ext/common/edge_pairing.h>
+#include <vcg_ext/common/union_find.h>
 
 namespace vcg_ext {
 
@@ -60,12 +62,8 @@ public:
     static MeshCheckReport Inspect(const MeshType &m, bool withTopology = true)
     {
         MeshCheckReport r;
-        for (const VertexType &v : m.vert) {
-            if (v.IsD()) continue;
-            ++r.vertices;
-            for (int k = 0; k < 3; ++k)
-                if (!std::isfinite(double(v.cP()[k]))) { ++r.nonFiniteVertices; break; }
-        }
+        r.nonFiniteVertices = CountNonFiniteVertices(m);
+        for (const VertexType &v : m.vert) r.vertices += v.IsD() ? 0 : 1;
         std::vector<std::array<int, 3>> tris;
         tris.reserve(m.face.size());
         for (const FaceType &f : m.face) {
@@ -85,45 +83,29 @@ public:
         for (size_t i = 1; i < sorted.size(); ++i)
             if (sorted[i] == sorted[i - 1]) ++r.duplicateFaces;
 
-        // Edges: (min, max, face, forward?) sorted by vertex pair.
-        struct HalfEdge { int a, b, face; bool forward; };
-        std::vector<HalfEdge> he;
-        he.reserve(tris.size() * 3);
-        for (int f = 0; f < int(tris.size()); ++f)
-            for (int k = 0; k < 3; ++k) {
-                int u = tris[f][k], w = tris[f][(k + 1) % 3];
-                if (u == w) continue;
-                he.push_back({std::min(u, w), std::max(u, w), f, u < w});
-            }
-        std::sort(he.begin(), he.end(), [](const HalfEdge &x, const HalfEdge &y) {
-            return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.face < y.face);
-        });
         // Union-find over faces (components) and over corners 3*f+k (fans around each vertex:
         // two faces sharing a manifold edge join their corners at both end points).
-        std::vector<int> faceSet(tris.size()), cornerSet(tris.size() * 3);
-        std::iota(faceSet.begin(), faceSet.end(), 0);
-        std::iota(cornerSet.begin(), cornerSet.end(), 0);
+        IndexUnionFind faceSet(int(tris.size())), cornerSet(int(3 * tris.size()));
         auto corner = [&](int f, int v) {
             for (int k = 0; k < 3; ++k) if (tris[f][k] == v) return 3 * f + k;
             return 3 * f;
         };
-        for (size_t i = 0; i < he.size();) {
-            size_t j = i;
-            while (j < he.size() && he[j].a == he[i].a && he[j].b == he[i].b) ++j;
-            size_t n = j - i;
+        const EdgePairing::Groups edges = EdgePairing::Group(tris);
+        for (int e = 0; e < edges.Count(); ++e) {
+            const int n = edges.Size(e), *h = edges.Begin(e);
             if (n == 1) ++r.boundaryEdges;
             else if (n > 2) ++r.nonManifoldEdges;
             else {
-                if (he[i].forward == he[i + 1].forward) ++r.inconsistentEdges;
-                int f = he[i].face, g = he[i + 1].face;
-                Unite(cornerSet, corner(f, he[i].a), corner(g, he[i].a));
-                Unite(cornerSet, corner(f, he[i].b), corner(g, he[i].b));
+                const int a = EdgePairing::From(tris, h[0]), b = EdgePairing::To(tris, h[0]);
+                if (a == EdgePairing::From(tris, h[1])) ++r.inconsistentEdges;  // both run a -> b
+                const int f = h[0] / 3, g = h[1] / 3;
+                cornerSet.Unite(corner(f, a), corner(g, a));
+                cornerSet.Unite(corner(f, b), corner(g, b));
             }
-            for (size_t k = i + 1; k < j; ++k) Unite(faceSet, he[i].face, he[k].face);
-            i = j;
+            for (int k = 1; k < n; ++k) faceSet.Unite(h[0] / 3, h[k] / 3);
         }
         for (size_t f = 0; f < tris.size(); ++f)
-            if (Find(faceSet, int(f)) == int(f)) ++r.components;
+            if (faceSet.Find(int(f)) == int(f)) ++r.components;
         // A vertex is manifold when all its corners are in one fan.
         std::vector<int> fanOf(m.vert.size(), -1);
         std::vector<char> bad(m.vert.size(), 0);
@@ -131,11 +113,26 @@ public:
             for (int k = 0; k < 3; ++k) {
                 int v = tris[f][k];
                 if (k > 0 && (v == tris[f][0] || (k == 2 && v == tris[f][1]))) continue;
-                int root = Find(cornerSet, int(3 * f + k));
+                int root = cornerSet.Find(int(3 * f + k));
                 if (fanOf[v] < 0) fanOf[v] = root;
                 else if (fanOf[v] != root && !bad[v]) { bad[v] = 1; ++r.nonManifoldVertices; }
             }
         return r;
+    }
+
+    // Live vertices with a NaN or infinite coordinate.
+    static int CountNonFiniteVertices(const MeshType &m)
+    {
+        int n = 0;
+        for (const VertexType &v : m.vert)
+            if (!v.IsD() && !IsFinite(v.cP())) ++n;
+        return n;
+    }
+
+    template <class PointType>
+    static bool IsFinite(const PointType &p)
+    {
+        return std::isfinite(double(p[0])) && std::isfinite(double(p[1])) && std::isfinite(double(p[2]));
     }
 
     static bool IsZeroArea(const FaceType &f)
@@ -145,18 +142,6 @@ public:
         double l = std::max({(b - a).SquaredNorm(), (c - b).SquaredNorm(), (a - c).SquaredNorm()});
         double cr = ((b - a) ^ (c - a)).SquaredNorm();
         return !(cr > 1e-24 * l * l);  // also true for NaN
-    }
-
-private:
-    static int Find(std::vector<int> &p, int x)
-    {
-        while (p[x] != x) { p[x] = p[p[x]]; x = p[x]; }
-        return x;
-    }
-    static void Unite(std::vector<int> &p, int a, int b)
-    {
-        a = Find(p, a); b = Find(p, b);
-        if (a != b) p[std::max(a, b)] = std::min(a, b);
     }
 };
 

@@ -1,8 +1,8 @@
 // Boundaries between face regions (region ids per face, e.g. from the VSA segmentation):
 //
 //   MeshEdgeTopology   index-based edge adjacency of a const triangle mesh (no vcg adjacency
-//                      component needed, the mesh is never touched), built in O(F): vertex -> face
-//                      lists, then each face edge matched within the face list of one end point.
+//                      component needed, the mesh is never touched): vertex -> face lists, and the
+//                      edges of the shared twin pairing (EdgePairing) numbered in face order.
 //                      Also the ordered fan of faces around a vertex, with its corner angles.
 //   RegionBoundaryGraph boundary edges (a manifold edge whose two faces have different ids),
 //                      corners and curves: maximal chains of boundary edges between corners, each
@@ -18,12 +18,16 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
 #include <vcg/complex/complex.h>
+
+#include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/edge_pairing.h>
 
 namespace vcg_ext {
 
@@ -67,7 +71,6 @@ public:
     std::vector<char> edgeKind;                // EdgeKind per edge
     std::vector<char> vertOnBorder;            // vertex touches a border or non-manifold edge
 
-    // O(F): the sum over face edges of one end point's face count.
     void Build(const MeshType &m)
     {
         mesh = &m;
@@ -93,41 +96,30 @@ public:
             if (faceVerts[f][0] >= 0)
                 for (int k = 0; k < 3; ++k) vertFaces[fill[faceVerts[f][k]]++] = f;
 
+        // Edges numbered in the order of their first half-edge (face order).
+        const EdgePairing::Groups groups = EdgePairing::Group(faceVerts);
+        std::vector<int> order(groups.Count());
+        std::iota(order.begin(), order.end(), 0);
+        std::sort(order.begin(), order.end(), [&](int x, int y) { return groups.Begin(x)[0] < groups.Begin(y)[0]; });
         edgeOf.assign(3 * size_t(faceCount), -1);
         twin.assign(3 * size_t(faceCount), -1);
         edgeVerts.clear();
         edgeHalf.clear();
         edgeKind.clear();
         vertOnBorder.assign(vertexCount, 0);
-        std::vector<int> others;
-        for (int f = 0; f < faceCount; ++f) {
-            if (faceVerts[f][0] < 0) continue;
-            for (int k = 0; k < 3; ++k) {
-                const int h = 3 * f + k;
-                if (edgeOf[h] >= 0) continue;
-                const int a = faceVerts[f][k], b = faceVerts[f][(k + 1) % 3];
-                const int id = int(edgeVerts.size());
-                edgeVerts.push_back({a, b});
-                edgeHalf.push_back(h);
-                edgeOf[h] = id;
-                others.clear();  // the same edge in the other faces around a
-                for (int i = vertFaceStart[a]; i < vertFaceStart[a + 1]; ++i) {
-                    int g = vertFaces[i];
-                    if (g == f) continue;
-                    for (int j = 0; j < 3; ++j) {
-                        int u = faceVerts[g][j], w = faceVerts[g][(j + 1) % 3];
-                        if ((u == a && w == b) || (u == b && w == a)) others.push_back(3 * g + j);
-                    }
-                }
-                for (int o : others) edgeOf[o] = id;
-                if (others.size() == 1) {
-                    edgeKind.push_back(Manifold);
-                    twin[h] = others[0];
-                    twin[others[0]] = h;
-                } else {
-                    edgeKind.push_back(others.empty() ? Border : NonManifold);
-                    vertOnBorder[a] = vertOnBorder[b] = 1;
-                }
+        for (int g : order) {
+            const int id = int(edgeVerts.size()), n = groups.Size(g), *h = groups.Begin(g);
+            const int a = EdgePairing::From(faceVerts, h[0]), b = EdgePairing::To(faceVerts, h[0]);
+            edgeVerts.push_back({a, b});
+            edgeHalf.push_back(h[0]);
+            for (int i = 0; i < n; ++i) edgeOf[h[i]] = id;
+            if (n == 2) {
+                edgeKind.push_back(Manifold);
+                twin[h[0]] = h[1];
+                twin[h[1]] = h[0];
+            } else {
+                edgeKind.push_back(n == 1 ? Border : NonManifold);
+                vertOnBorder[a] = vertOnBorder[b] = 1;
             }
         }
     }
@@ -450,15 +442,14 @@ std::vector<int> MergeSmallRegions(const MeshEdgeTopology<MeshType> &t, const st
             if (t.faceVerts[f][0] >= 0) ++size[label[f]];
         // Longest shared boundary per (small region, neighbour).
         std::unordered_map<uint64_t, double> shared;
-        auto key = [](int a, int b) { return uint64_t(uint32_t(a)) << 32 | uint64_t(uint32_t(b)); };
         for (int e = 0; e < t.EdgeCount(); ++e) {
             if (!t.IsManifoldEdge(e)) continue;
             int h = t.edgeHalf[e];
             int a = label[h / 3], b = label[t.twin[h] / 3];
             if (a == b) continue;
             double len = t.EdgeLength(e);
-            if (size[a] < minFaces) shared[key(a, b)] += len;
-            if (size[b] < minFaces) shared[key(b, a)] += len;
+            if (size[a] < minFaces) shared[DirectedKey(a, b)] += len;
+            if (size[b] < minFaces) shared[DirectedKey(b, a)] += len;
         }
         std::unordered_map<int, std::pair<int, double>> best;  // small region -> (neighbour, length)
         for (auto &s : shared) {

@@ -7,6 +7,7 @@
 #define VCG_EXT_COMMON_FRONT_EDGES_H
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
@@ -14,7 +15,9 @@
 #include <vector>
 
 #include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/edge_layer.h>
 
 namespace vcg_ext {
 
@@ -23,14 +26,12 @@ class FrontEdges
 {
 public:
     typedef typename MeshType::FaceType FaceType;
-    typedef std::pair<int, int> Edge;  // vertex indices, first < second
-
-    static Edge MakeEdge(int a, int b) { return a < b ? Edge(a, b) : Edge(b, a); }
+    typedef VertexPair Edge;  // vertex indices, first < second
 
     // Vertex indices of edge i of face f.
     static Edge EdgeOf(const MeshType &m, const FaceType &f, int i)
     {
-        return MakeEdge(int(vcg::tri::Index(m, f.cV(i))), int(vcg::tri::Index(m, f.cV((i + 1) % 3))));
+        return UndirectedPair(int(vcg::tri::Index(m, f.cV(i))), int(vcg::tri::Index(m, f.cV((i + 1) % 3))));
     }
 
     // Clears the face-edge selection of every live face (and the faux bits too when asked).
@@ -49,16 +50,16 @@ public:
         std::unordered_set<uint64_t> wanted, found;
         std::vector<char> onFront(m.vert.size(), 0);
         for (const Edge &e : edges) {
-            wanted.insert(Key(e));
+            wanted.insert(EdgeKey(e));
             onFront[e.first] = onFront[e.second] = 1;
         }
         for (FaceType &f : m.face) {
             if (f.IsD()) continue;
             for (int i = 0; i < 3; ++i) {
                 const Edge e = EdgeOf(m, f, i);
-                if (!onFront[e.first] || !onFront[e.second] || !wanted.count(Key(e))) continue;
+                if (!onFront[e.first] || !onFront[e.second] || !wanted.count(EdgeKey(e))) continue;
                 f.SetFaceEdgeS(i);
-                found.insert(Key(e));
+                found.insert(EdgeKey(e));
             }
         }
         return int(found.size());
@@ -85,7 +86,7 @@ public:
         for (const FaceType &f : m.face) {
             if (f.IsD()) continue;
             for (int i = 0; i < 3; ++i) {
-                auto &s = sides[Key(EdgeOf(m, f, i))];
+                auto &s = sides[EdgeKey(EdgeOf(m, f, i))];
                 ++s.first;
                 s.second += f.IsFaceEdgeS(i) ? 1 : 0;
             }
@@ -101,25 +102,16 @@ public:
     template <class EdgeMeshType>
     static void BuildEdgeMesh(const MeshType &m, const std::vector<Edge> &edges, EdgeMeshType &out)
     {
-        out.Clear();
         std::unordered_map<int, int> index;
-        std::vector<int> used;
-        for (const Edge &e : edges)
+        std::vector<typename MeshType::CoordType> points;
+        std::vector<std::array<int, 2>> segments;
+        for (const Edge &e : edges) {
             for (int v : {e.first, e.second})
-                if (index.emplace(v, int(used.size())).second) used.push_back(v);
-        if (!used.empty()) vcg::tri::Allocator<EdgeMeshType>::AddVertices(out, used.size());
-        typedef typename EdgeMeshType::CoordType OutCoord;
-        for (size_t i = 0; i < used.size(); ++i) out.vert[i].P() = OutCoord::Construct(m.vert[used[i]].cP());
-        if (!edges.empty()) vcg::tri::Allocator<EdgeMeshType>::AddEdges(out, edges.size());
-        for (size_t i = 0; i < edges.size(); ++i) {
-            out.edge[i].V(0) = &out.vert[index[edges[i].first]];
-            out.edge[i].V(1) = &out.vert[index[edges[i].second]];
+                if (index.emplace(v, int(points.size())).second) points.push_back(m.vert[v].cP());
+            segments.push_back({index[e.first], index[e.second]});
         }
-        vcg::tri::UpdateBounding<EdgeMeshType>::Box(out);
+        WriteEdgeLayer(points, segments, out);
     }
-
-private:
-    static uint64_t Key(const Edge &e) { return (uint64_t(uint32_t(e.first)) << 32) | uint32_t(e.second); }
 };
 
 }  // namespace vcg_ext

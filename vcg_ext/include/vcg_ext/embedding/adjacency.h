@@ -1,8 +1,8 @@
 // Index-based half-edge adjacency for splitting a mesh along polylines.
 //
 // Half-edge 3f+k is edge k of face f, running V(k) -> V((k+1)%3). twin[h] is the half-edge running
-// the other way along the same edge (-1 on a mesh boundary). Built in O(F) from a vertex -> face
-// table, without vcg's optional FF/VF components, so validating input never touches the mesh.
+// the other way along the same edge (-1 on a mesh boundary). Built by the shared edge pairing
+// (EdgePairing), without vcg's optional FF/VF components, so validating input never touches the mesh.
 // The build refuses meshes it cannot walk on: edges with more than two faces, inconsistently
 // oriented neighbours, repeated vertices in a face, vertices whose faces form several fans.
 #ifndef VCG_EXT_EMBEDDING_ADJACENCY_H
@@ -13,6 +13,8 @@
 #include <vector>
 
 #include <vcg/complex/complex.h>
+
+#include <vcg_ext/common/edge_pairing.h>
 
 namespace vcg_ext {
 namespace embedding {
@@ -48,44 +50,33 @@ public:
             if (fv[f][0] == fv[f][1] || fv[f][1] == fv[f][2] || fv[f][2] == fv[f][0])
                 return "face " + std::to_string(f) + " has a repeated vertex";
         }
-        // Vertex -> faces table (CSR), only needed while matching twins.
-        std::vector<int> start(nv + 1, 0), faces;
-        for (int f = 0; f < nf; ++f)
-            if (IsLive(f))
-                for (int k = 0; k < 3; ++k) ++start[fv[f][k] + 1];
-        for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
-        faces.resize(start[nv]);
-        std::vector<int> fill(start.begin(), start.end() - 1);
-        for (int f = 0; f < nf; ++f)
-            if (IsLive(f))
-                for (int k = 0; k < 3; ++k) faces[fill[fv[f][k]]++] = f;
-
-        twin.assign(3 * nf, -1);
-        vertexFace.assign(nv, -1);
-        for (int f = 0; f < nf; ++f) {
-            if (!IsLive(f)) continue;
-            for (int k = 0; k < 3; ++k) {
-                const int u = fv[f][k], w = fv[f][Next(k)];
-                vertexFace[u] = f;
-                int found = -1, opposite = 0, same = 0;
-                for (int i = start[w]; i < start[w + 1]; ++i) {
-                    const int g = faces[i];
-                    const int j = CornerOf(g, w);
-                    if (fv[g][Next(j)] == u) { ++opposite; found = 3 * g + j; }
-                    if (g != f && fv[g][Prev(j)] == u) ++same;  // u -> w in another face
-                }
-                if (opposite > 1 || same > 0)
-                    return "the mesh is not a consistently oriented 2-manifold (edge " + std::to_string(u) + "-" +
-                           std::to_string(w) + " has more than two faces or faces of opposite orientation)";
-                twin[3 * f + k] = found;
-            }
+        // Twins: an edge must have one face (boundary) or two that run it in opposite directions.
+        // The first bad half-edge in face order names the edge in the message.
+        const EdgePairing::Groups edges = EdgePairing::Group(fv);
+        int firstBad = -1;
+        for (int e = 0; e < edges.Count(); ++e) {
+            const int *h = edges.Begin(e);
+            const bool bad = edges.Size(e) > 2 || (edges.Size(e) == 2 && From(h[0]) == From(h[1]));
+            if (bad && (firstBad < 0 || h[0] < firstBad)) firstBad = h[0];
         }
+        if (firstBad >= 0)
+            return "the mesh is not a consistently oriented 2-manifold (edge " + std::to_string(From(firstBad)) + "-" +
+                   std::to_string(To(firstBad)) + " has more than two faces or faces of opposite orientation)";
+        twin = EdgePairing::Twins(edges, 3 * size_t(nf));
+        vertexFace.assign(nv, -1);
+        std::vector<int> faceCount(nv, 0);
+        for (int f = 0; f < nf; ++f)
+            if (IsLive(f))
+                for (int k = 0; k < 3; ++k) {
+                    vertexFace[fv[f][k]] = f;
+                    ++faceCount[fv[f][k]];
+                }
         // Manifold vertices: walking the fan reaches every incident face.
         for (int v = 0; v < nv; ++v) {
             if (vertexFace[v] < 0) continue;
             int reached = 0;
             ForEachFaceAround(vertexFace[v], v, [&](int, int) { ++reached; });
-            if (reached != start[v + 1] - start[v])
+            if (reached != faceCount[v])
                 return "the mesh is not 2-manifold: vertex " + std::to_string(v) + " has several fans of faces";
         }
         return "";

@@ -145,13 +145,12 @@ private:
         adj.fv.resize(m.face.size(), {-1, -1, -1});
         adj.twin.resize(3 * m.face.size(), -1);
         adj.vertexFace.resize(m.vert.size(), -1);
-        auto key = [](int a, int b) { return (uint64_t(uint32_t(a)) << 32) | uint32_t(b); };
         std::vector<std::pair<uint64_t, int>> halfEdges;  // (from, to) -> half-edge
         halfEdges.reserve(3 * changed.size());
         for (int f : changed) {
             for (int k = 0; k < 3; ++k) adj.fv[f][k] = int(vcg::tri::Index(m, m.face[f].V(k)));
             for (int k = 0; k < 3; ++k) {
-                halfEdges.push_back({key(adj.fv[f][k], adj.fv[f][EmbeddingAdjacency::Next(k)]), 3 * f + k});
+                halfEdges.push_back({DirectedKey(adj.fv[f][k], adj.fv[f][EmbeddingAdjacency::Next(k)]), 3 * f + k});
                 adj.vertexFace[adj.fv[f][k]] = f;
             }
         }
@@ -160,8 +159,8 @@ private:
             const int f = changed[i];
             for (int k = 0; k < 3; ++k) {
                 const int a = adj.fv[f][k], b = adj.fv[f][EmbeddingAdjacency::Next(k)];
-                auto it = std::lower_bound(halfEdges.begin(), halfEdges.end(), std::make_pair(key(b, a), -1));
-                if (it != halfEdges.end() && it->first == key(b, a)) { adj.twin[3 * f + k] = it->second; continue; }
+                auto it = std::lower_bound(halfEdges.begin(), halfEdges.end(), std::make_pair(DirectedKey(b, a), -1));
+                if (it != halfEdges.end() && it->first == DirectedKey(b, a)) { adj.twin[3 * f + k] = it->second; continue; }
                 const std::array<int, 3> &pv = oldFv[parent[i]];
                 adj.twin[3 * f + k] = -1;
                 for (int j = 0; j < 3; ++j)

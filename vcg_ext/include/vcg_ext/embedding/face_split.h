@@ -24,6 +24,8 @@
 
 #include <vcg/space/point2.h>
 
+#include <vcg_ext/common/edge_key.h>
+
 namespace vcg_ext {
 namespace embedding {
 
@@ -31,7 +33,7 @@ class FaceSplitter
 {
 public:
     typedef vcg::Point2<double> P2;
-    typedef std::pair<int, int> Seg;
+    typedef VertexPair Seg;  // a segment between two loop points, smaller index first
 
     struct Input {
         std::vector<P2> xy;                    // local points: the loop points first, then interior points
@@ -86,7 +88,6 @@ private:
     }
 
     static double Angle(const P2 &u, const P2 &v) { return std::atan2(std::fabs(u ^ v), u * v); }
-    static Seg Key(int a, int b) { return a < b ? Seg(a, b) : Seg(b, a); }
     double Orient(int a, int b, int c) const { return (in.xy[b] - in.xy[a]) ^ (in.xy[c] - in.xy[a]); }
     bool IsInterior(int p) const { return in.edgeMask[p] == 0; }
 
@@ -101,7 +102,7 @@ private:
         std::vector<Seg> segs = SplitSegmentsAtPoints();
         if (!out.error.empty()) return;
         loops.push_back({in.loop, {}, false});
-        for (size_t k = 0; k < in.loop.size(); ++k) constrained.insert(Key(in.loop[k], in.loop[(k + 1) % in.loop.size()]));
+        for (size_t k = 0; k < in.loop.size(); ++k) constrained.insert(UndirectedPair(in.loop[k], in.loop[(k + 1) % in.loop.size()]));
         std::vector<Seg> inner;
         for (const Seg &s : segs) {
             if (IsInterior(s.first) || IsInterior(s.second)) inner.push_back(s);
@@ -137,7 +138,7 @@ private:
                 if ((a + d * t - in.xy[p]).Norm() <= in.tolerance) on.push_back({t, p});
             }
             std::sort(on.begin(), on.end());
-            for (size_t k = 0; k + 1 < on.size(); ++k) result.insert(Key(on[k].second, on[k + 1].second));
+            for (size_t k = 0; k + 1 < on.size(); ++k) result.insert(UndirectedPair(on[k].second, on[k + 1].second));
         }
         for (const Seg &s : result) out.segmentEdges.push_back(s);
         return std::vector<Seg>(result.begin(), result.end());
@@ -161,7 +162,7 @@ private:
             second.insert(second.end(), l.begin(), l.begin() + i + 1);
             loops[li].loop = first;
             loops.push_back({second, {}, false});
-            constrained.insert(Key(s.first, s.second));
+            constrained.insert(UndirectedPair(s.first, s.second));
             return true;
         }
         return Fail("two polyline segments cross inside the face");
@@ -247,7 +248,7 @@ private:
         for (int k = 0; k < 3; ++k) {
             const int a = t[k], b = t[(k + 1) % 3];
             if (std::fabs(SignedDistance(a, b, p)) > onEdge) continue;
-            if (constrained.count(Key(a, b))) return Fail("a point inside the face lies on a polyline segment it does not split");
+            if (constrained.count(UndirectedPair(a, b))) return Fail("a point inside the face lies on a polyline segment it does not split");
             const int c = t[(k + 2) % 3];
             int other = -1, d = -1;
             for (size_t ti = 0; ti < lt.tris.size() && other < 0; ++ti)
@@ -314,7 +315,7 @@ private:
             for (int k = 0; k < 3; ++k) {
                 const int x = t[k], y = t[(k + 1) % 3];
                 if (x < y && Crosses(a, b, x, y)) {
-                    if (constrained.count(Key(x, y))) return Fail("two polyline segments cross inside the face");
+                    if (constrained.count(UndirectedPair(x, y))) return Fail("two polyline segments cross inside the face");
                     queue.push_back({x, y});
                 }
             }
@@ -330,7 +331,7 @@ private:
         int t, k;
         if (!FindHalfEdge(lt, a, b, t, k) && !FindHalfEdge(lt, b, a, t, k))
             return Fail("a polyline segment passes through a point it does not end at");
-        constrained.insert(Key(a, b));
+        constrained.insert(UndirectedPair(a, b));
         return true;
     }
 
@@ -343,7 +344,7 @@ private:
             for (size_t i = 0; i < lt.tris.size() && !flipped; ++i)
                 for (int k = 0; k < 3 && !flipped; ++k) {
                     const int a = lt.tris[i][k], b = lt.tris[i][(k + 1) % 3], c = lt.tris[i][(k + 2) % 3];
-                    if (a > b || constrained.count(Key(a, b))) continue;
+                    if (a > b || constrained.count(UndirectedPair(a, b))) continue;
                     int t2, k2;
                     if (!FindHalfEdge(lt, b, a, t2, k2)) continue;
                     const int d = lt.tris[t2][(k2 + 2) % 3];

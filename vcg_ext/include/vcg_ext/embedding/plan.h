@@ -21,6 +21,7 @@
 #include <vcg_ext/embedding/locate.h>
 #include <vcg_ext/embedding/result.h>
 #include <vcg_ext/embedding/trace.h>
+#include <vcg_ext/mesh_checks.h>
 
 namespace vcg_ext {
 namespace embedding {
@@ -44,9 +45,7 @@ public:
                                                   : "the polyline layer has no edges");
         if (m.fn == 0) return Fail("the mesh has no faces");
         Lap lap;
-        for (const VertexType &v : m.vert)
-            if (!v.IsD() && !(std::isfinite(double(v.cP()[0])) && std::isfinite(double(v.cP()[1])) && std::isfinite(double(v.cP()[2]))))
-                return Fail("the mesh has vertices with NaN or infinite coordinates");
+        if (MeshChecks<MeshType>::CountNonFiniteVertices(m)) return Fail("the mesh has vertices with NaN or infinite coordinates");
         Progress(cb, 2, "Split along front: adjacency");
         std::string bad = plan.adj.Build(m);
         if (!bad.empty()) return Fail(bad);
@@ -167,7 +166,7 @@ private:
                 if (polyPoint[i] != -1) continue;
                 if (pv->IsD()) return Error("polyline edge " + std::to_string(e) + " uses a deleted vertex");
                 const EmbedVec p = EmbedVec::Construct(pv->cP());
-                if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+                if (!MeshChecks<MeshType>::IsFinite(p))
                     return Error("polyline point " + std::to_string(i) + " has NaN or infinite coordinates");
                 polyPoint[i] = -2;
                 used.push_back(i);
@@ -309,7 +308,7 @@ private:
             }
             std::vector<std::array<int, 3>> tris;
             for (const auto &t : out.triangles) tris.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
-            for (const auto &s : out.segmentEdges) front.push_back(Ordered(ids[s.first], ids[s.second]));
+            for (const auto &s : out.segmentEdges) front.push_back(UndirectedPair(ids[s.first], ids[s.second]));
             plan.splitFaces.push_back(f);
             plan.pieces.push_back(tris);
         }
@@ -377,7 +376,7 @@ private:
                 if (chain[k].second == s.b) j = k;
             }
             if (i > j) std::swap(i, j);
-            for (int k = i; k >= 0 && k < j; ++k) front.push_back(Ordered(chain[k].second, chain[k + 1].second));
+            for (int k = i; k >= 0 && k < j; ++k) front.push_back(UndirectedPair(chain[k].second, chain[k + 1].second));
         }
     }
 };

@@ -15,6 +15,7 @@
 #include <vcg_ext/embedding/adjacency.h>
 #include <vcg_ext/embedding/result.h>
 #include <vcg_ext/common/region_ids.h>
+#include <vcg_ext/common/union_find.h>
 
 namespace vcg_ext {
 namespace embedding {
@@ -59,26 +60,21 @@ private:
         std::vector<int> oldId(n, -1);
         if (!(vcg::tri::HasPerFaceQuality(m) && RegionIds<MeshType>::Read(m, oldId).empty())) oldId.assign(n, -1);
         // Union-find over the faces in index order (cache friendly), joined across unselected edges.
-        std::vector<int> parent(n), patch(n, -1);
-        for (int f = 0; f < n; ++f) parent[f] = f;
-        auto find = [&](int x) {
-            while (parent[x] != x) x = parent[x] = parent[parent[x]];
-            return x;
-        };
+        IndexUnionFind patches(n);
+        std::vector<int> patch(n, -1);
         for (int f = 0; f < n; ++f) {
             if (m.face[f].IsD()) continue;
             for (int k = 0; k < 3; ++k) {
                 const int h = adj.twin[3 * f + k];
                 if (h < 0 || h / 3 < f || m.face[f].IsFaceEdgeS(k)) continue;
-                const int a = find(f), b = find(h / 3);
-                if (a != b) parent[std::max(a, b)] = std::min(a, b);
+                patches.Unite(f, h / 3);
             }
         }
         std::vector<int> claim;  // per patch: its majority id
         std::vector<char> mixed;
         for (int f = 0; f < n; ++f) {  // a root is its set's lowest face: patches numbered in face order
             if (m.face[f].IsD()) continue;
-            const int root = find(f);
+            const int root = patches.Find(f);
             if (root == f) {
                 patch[f] = int(claim.size());
                 claim.push_back(oldId[f]);

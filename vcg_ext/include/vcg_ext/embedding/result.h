@@ -15,6 +15,7 @@
 
 #include <vcg_ext/embedding/adjacency.h>
 #include <vcg_ext/embedding/locate.h>
+#include <vcg_ext/common/edge_key.h>
 
 namespace vcg_ext {
 namespace embedding {
@@ -74,12 +75,6 @@ struct Lap {
         return s;
     }
 };
-inline std::pair<int, int> Ordered(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
-inline uint64_t EdgeKey(int u, int w)
-{
-    if (u > w) std::swap(u, w);
-    return (uint64_t(uint32_t(u)) << 32) | uint32_t(w);
-}
 inline void Progress(vcg::CallBackPos *cb, int percent, const char *what)
 {
     if (cb) cb(std::min(99, std::max(0, percent)), what);

@@ -16,6 +16,8 @@
 
 #include <vcg/space/point3.h>
 
+#include <vcg_ext/common/edge_pairing.h>
+
 namespace vcg_ext {
 namespace qmorph {
 
@@ -115,18 +117,7 @@ public:
         heVert.clear(); heNext.clear(); hePrev.clear(); heTwin.clear(); heFace.clear(); heInitial.clear();
         faceHe.clear(); faceSize.clear(); faceLevel.clear();
         for (auto &t : tris) AddFace({t[0], t[1], t[2]}, 3);
-        struct Key { int a, b, h; };
-        std::vector<Key> keys;
-        keys.reserve(heVert.size());
-        for (int h = 0; h < HalfEdgeCount(); ++h)
-            if (cut.empty() || !cut[h]) keys.push_back({std::min(Org(h), Dst(h)), std::max(Org(h), Dst(h)), h});
-        std::sort(keys.begin(), keys.end(), [](const Key &x, const Key &y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-        for (size_t i = 0; i + 1 < keys.size(); ++i)
-            if (keys[i].a == keys[i + 1].a && keys[i].b == keys[i + 1].b) {
-                heTwin[keys[i].h] = keys[i + 1].h;
-                heTwin[keys[i + 1].h] = keys[i].h;
-                ++i;
-            }
+        heTwin = EdgePairing::Twins(tris, cut);  // half-edge 3t+k is edge k of triangle t, as AddFace made them
         for (int h = 0; h < HalfEdgeCount(); ++h)
             if (heTwin[h] < 0) { heInitial[h] = 1; vertFixed[Org(h)] = 1; vertFixed[Dst(h)] = 1; }
         for (int h = 0; h < HalfEdgeCount(); ++h) SetVertexHe(Org(h), h);

@@ -11,6 +11,8 @@
 
 #include <vcg/space/point3.h>
 
+#include <vcg_ext/common/edge_pairing.h>
+
 namespace vcg_ext {
 
 class SurfaceProjector
@@ -23,19 +25,9 @@ public:
         pts = points;
         tri = tris;
         nb.assign(tri.size(), {-1, -1, -1});
-        struct Key { int a, b, t, k; };
-        std::vector<Key> keys;
-        for (int t = 0; t < int(tri.size()); ++t)
-            for (int k = 0; k < 3; ++k) {
-                int a = tri[t][k], b = tri[t][(k + 1) % 3];
-                keys.push_back({std::min(a, b), std::max(a, b), t, k});
-            }
-        std::sort(keys.begin(), keys.end(), [](const Key &x, const Key &y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-        for (size_t i = 0; i + 1 < keys.size(); ++i)
-            if (keys[i].a == keys[i + 1].a && keys[i].b == keys[i + 1].b) {
-                nb[keys[i].t][keys[i].k] = keys[i + 1].t;
-                nb[keys[i + 1].t][keys[i + 1].k] = keys[i].t;
-            }
+        const std::vector<int> twin = EdgePairing::Twins(tri);
+        for (size_t h = 0; h < twin.size(); ++h)
+            if (twin[h] >= 0) nb[h / 3][h % 3] = twin[h] / 3;
     }
 
     // Closest point to p found by walking from `home` (updated to the triangle of the result).
