@@ -74,11 +74,6 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     p.targetEdgeLength = par.getAbsPerc("TargetEdgeLength");
     p.remeshIterations = par.getInt("RemeshIterations");
     const QString exportPath = par.getSaveFileName("ExportPath").trimmed();
-    std::string bad = p.Validate();
-    if (!bad.empty()) return fail(name, QString::fromStdString(bad));
-    bad = QMorphCMeshO::CheckInput(mm.cm);
-    if (bad.empty()) bad = QMorphCMeshO::CheckRemeshSize(mm.cm, p);
-    if (!bad.empty()) return fail(name, QString::fromStdString(bad));
     if (!exportPath.isEmpty()) {
         QString suffix = QFileInfo(exportPath).suffix().toLower();
         if (suffix != "obj" && suffix != "off" && suffix != "ply")
@@ -87,10 +82,15 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
         if (!dir.isDir() || !dir.isWritable()) return fail(name, "cannot write into the folder of " + exportPath);
     }
 
-    // Checks passed: from here on the mesh changes.
+    // The core checks the mesh and the parameters first and leaves the mesh as it is on error; it
+    // needs face-face adjacency, enabled here and dropped again on error.
+    const bool hadFaceFace = mm.hasDataMask(MeshModel::MM_FACEFACETOPO);
     mm.updateDataMask(MeshModel::MM_FACEFACETOPO);
     QMorphCMeshO::Result r = QMorphCMeshO::Apply(mm.cm, p, cb);
-    if (!r.error.empty()) return fail(name, QString::fromStdString(r.error));
+    if (!r.error.empty()) {
+        if (!hadFaceFace) mm.clearDataMask(MeshModel::MM_FACEFACETOPO);
+        return fail(name, QString::fromStdString(r.error));
+    }
     mm.updateDataMask(MeshModel::MM_POLYGONAL);
     if (mm.hasDataMask(MeshModel::MM_FACEQUALITY) && mm.hasDataMask(MeshModel::MM_FACECOLOR)) {
         std::vector<int> ids;
@@ -105,21 +105,9 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
         layerNote = QString("; %1 layer '%2' (%3 edges)").arg(existed ? "refreshed" : "new", layer->label()).arg(layer->cm.en);
     }
 
-    const vcg_ext::QuadQualityReport &q = r.quality;
-    Log("Q-Morph: %d patches (%d without front), %d initial front edges (%d of them unselected sharp creases); %d quads, %d triangles left "
-        "(%.1f%% of the area in quads); %d quads formed, %d by templates, %d seams, %d transition seams, %d transition "
-        "splits, %d triangle pairs merged, %d doublets removed, %d edges turned, %d quads collapsed and %d opened for "
-        "valence; %d swaps, %d splits; %.3f s%s",
-        r.patches, r.patchesWithoutFront, r.initialFrontEdges, r.creaseEdges, r.quads, r.triangles, 100 * q.quadAreaFraction,
-        r.ops.quadsFormed, r.ops.templates, r.ops.seams, r.ops.transitionSeams, r.ops.transitionSplits, r.ops.pairedTriangles, r.ops.doublets, r.ops.valenceTurns, r.ops.diagonalCollapses, r.ops.quadsOpened, r.ops.swaps, r.ops.splits, r.seconds,
-        qUtf8Printable(layerNote));
-    if (p.targetEdgeLength > 0)
-        Log("Q-Morph re-meshing to edge length %g: %d front edges cut into pieces; %d splits, %d collapses, %d flips",
-            p.targetEdgeLength, r.frontEdgesSubdivided, r.remesh.splits, r.remesh.collapses, r.remesh.flips);
-    Log("Q-Morph quality: scaled Jacobian min %.3f mean %.3f, %d quads below 0.3, %d inverted; irregular vertices "
-        "%d of %d (%.1f%%)",
-        q.minJacobian, q.meanJacobian, q.quadsBelow03, q.invertedQuads, q.irregularVertices, q.interiorAllQuadVertices,
-        100 * q.IrregularFraction());
+    Log("%s%s", r.Summary().c_str(), qUtf8Printable(layerNote));
+    if (!r.RemeshSummary().empty()) Log("%s", r.RemeshSummary().c_str());
+    Log("%s", r.QualitySummary().c_str());
 
     if (!exportPath.isEmpty()) {
         std::string err = vcg_ext::PolygonExport::Save(vcg_ext::QuadQuality::FromFauxMesh(mm.cm), exportPath.toStdString());

@@ -69,12 +69,12 @@ private:
         if (n == 0) return;
         vcg::tri::Allocator<MeshType>::AddVertices(m, n);
         for (int k = 0; k < n; ++k) {
-            const SurfacePoint &s = plan.newPoints[k];
+            const LocatedPoint &s = plan.newPoints[k];
             VertexType &v = m.vert[plan.vertexCount + k];
             int src[3];
             double w[3];
             int count;
-            if (s.kind == SurfacePoint::OnEdge) {
+            if (s.kind == LocatedPoint::OnEdge) {
                 src[0] = plan.adj.fv[s.face][s.edge];
                 src[1] = plan.adj.fv[s.face][EmbeddingAdjacency::Next(s.edge)];
                 w[0] = 1 - s.t;

@@ -30,8 +30,11 @@ namespace embedding {
 
 typedef vcg::Point3<double> EmbedVec;
 
-// A point on the surface. Edge points are stored on a half-edge of `face`.
-struct SurfacePoint {
+// A polyline point located on the mesh: the answer of a query (kind, a face holding it, its
+// barycentric coordinates and re-projected position). Not a path point of the straightening
+// (vcg_ext::SurfacePoint, a vertex or a parameter on an edge of the edge graph): edge points here
+// are stored on a half-edge of `face`, as the splitting needs them.
+struct LocatedPoint {
     enum Kind { AtVertex, OnEdge, InFace };
     Kind kind = InFace;
     int vertex = -1;      // AtVertex: the vertex index
@@ -84,10 +87,10 @@ public:
     EmbedVec P(int v) const { return EmbedVec::Construct(m.vert[v].cP()); }
 
     // Locates every point: found[i] says whether points[i] is within the tolerance of the surface.
-    void LocateAll(const std::vector<EmbedVec> &points, std::vector<SurfacePoint> &out, std::vector<char> &found) const
+    void LocateAll(const std::vector<EmbedVec> &points, std::vector<LocatedPoint> &out, std::vector<char> &found) const
     {
         const int n = int(points.size());
-        out.assign(n, SurfacePoint());
+        out.assign(n, LocatedPoint());
         found.assign(n, 0);
         if (n == 0) return;
         std::vector<double> best(n, std::numeric_limits<double>::max());
@@ -109,9 +112,9 @@ public:
     }
 
     // One point (tests, tools): O(F).
-    bool Locate(const EmbedVec &p, SurfacePoint &out) const
+    bool Locate(const EmbedVec &p, LocatedPoint &out) const
     {
-        std::vector<SurfacePoint> o;
+        std::vector<LocatedPoint> o;
         std::vector<char> found;
         LocateAll({p}, o, found);
         out = o[0];
@@ -119,10 +122,10 @@ public:
     }
 
     // The same rules for a point already on face f (used for points computed on the surface).
-    void Classify(int f, const EmbedVec &q, SurfacePoint &out) const
+    void Classify(int f, const EmbedVec &q, LocatedPoint &out) const
     {
         const std::array<int, 3> &t = adj.fv[f];
-        out = SurfacePoint();
+        out = LocatedPoint();
         out.face = f;
         int nearV = -1;
         double dv = tol;
@@ -144,13 +147,13 @@ public:
             const double len = (b - a).Norm();
             if (te * len <= tol) { SetVertex(f, nearE, out); return; }
             if ((1 - te) * len <= tol) { SetVertex(f, EmbeddingAdjacency::Next(nearE), out); return; }
-            out.kind = SurfacePoint::OnEdge;
+            out.kind = LocatedPoint::OnEdge;
             out.edge = nearE;
             out.t = te;
             out.pos = a + (b - a) * te;
             return;
         }
-        out.kind = SurfacePoint::InFace;
+        out.kind = LocatedPoint::InFace;
         out.bary = Barycentric(f, q);
         out.pos = q;
     }
@@ -246,9 +249,9 @@ private:
     const EmbeddingAdjacency &adj;
     double tol;
 
-    void SetVertex(int f, int corner, SurfacePoint &out) const
+    void SetVertex(int f, int corner, LocatedPoint &out) const
     {
-        out.kind = SurfacePoint::AtVertex;
+        out.kind = LocatedPoint::AtVertex;
         out.vertex = adj.fv[f][corner];
         out.face = f;
         out.pos = P(out.vertex);

@@ -115,11 +115,11 @@ private:
         return buf;
     }
 
-    SurfacePoint PointOf(int id) const
+    LocatedPoint PointOf(int id) const
     {
         if (id >= plan.vertexCount) return plan.newPoints[id - plan.vertexCount];
-        SurfacePoint s;
-        s.kind = SurfacePoint::AtVertex;
+        LocatedPoint s;
+        s.kind = LocatedPoint::AtVertex;
         s.vertex = id;
         s.face = plan.adj.vertexFace[id];
         s.pos = EmbedVec::Construct(m.vert[id].cP());
@@ -128,11 +128,11 @@ private:
 
     // The id of a located point; points within the tolerance of an earlier one on the same
     // edge / in the same face are that point.
-    int Register(const SurfacePoint &s)
+    int Register(const LocatedPoint &s)
     {
         const EmbeddingAdjacency &adj = plan.adj;
-        if (s.kind == SurfacePoint::AtVertex) return s.vertex;
-        if (s.kind == SurfacePoint::OnEdge) {
+        if (s.kind == LocatedPoint::AtVertex) return s.vertex;
+        if (s.kind == LocatedPoint::OnEdge) {
             const int u = adj.fv[s.face][s.edge], w = adj.fv[s.face][EmbeddingAdjacency::Next(s.edge)];
             const double t = u < w ? s.t : 1 - s.t;
             const double len = (loc->P(w) - loc->P(u)).Norm();
@@ -173,7 +173,7 @@ private:
                 points.push_back(p);
             }
         }
-        std::vector<SurfacePoint> located;
+        std::vector<LocatedPoint> located;
         std::vector<char> found;
         loc->LocateAll(points, located, found);
         std::unordered_set<int> seen;
@@ -184,13 +184,13 @@ private:
                          loc->DistanceToSurface(points[j]), tol);
                 return Error("polyline point " + std::to_string(used[j]) + " " + Pos(points[j]) + buf);
             }
-            const SurfacePoint &s = located[j];
+            const LocatedPoint &s = located[j];
             const int id = Register(s);
             polyPoint[used[j]] = id;
             ++r.polylinePoints;
             if (!seen.insert(id).second) { ++r.mergedPoints; continue; }
-            if (s.kind == SurfacePoint::AtVertex) ++r.pointsAtVertices;
-            else if (s.kind == SurfacePoint::OnEdge) ++r.pointsOnEdges;
+            if (s.kind == LocatedPoint::AtVertex) ++r.pointsAtVertices;
+            else if (s.kind == LocatedPoint::OnEdge) ++r.pointsOnEdges;
             else ++r.pointsInFaces;
         }
         return true;
@@ -204,8 +204,8 @@ private:
             const int k = plan.adj.CornerOf(f, id);
             return k < 0 ? 0 : (unsigned char)((1 << k) | (1 << EmbeddingAdjacency::Prev(k)));
         }
-        const SurfacePoint &s = plan.newPoints[id - plan.vertexCount];
-        if (s.kind != SurfacePoint::OnEdge) return 0;
+        const LocatedPoint &s = plan.newPoints[id - plan.vertexCount];
+        if (s.kind != LocatedPoint::OnEdge) return 0;
         const uint64_t key = EdgeKey(plan.adj.fv[s.face][s.edge], plan.adj.fv[s.face][EmbeddingAdjacency::Next(s.edge)]);
         for (int k = 0; k < 3; ++k)
             if (EdgeKey(t[k], t[EmbeddingAdjacency::Next(k)]) == key) return (unsigned char)(1 << k);
@@ -230,7 +230,7 @@ private:
 
     bool EmbedSegments(const PolylineType &poly)
     {
-        std::vector<SurfacePoint> path;
+        std::vector<LocatedPoint> path;
         std::vector<IdPair> done;
         const int total = int(poly.edge.size());
         int maxSteps = 0;
@@ -248,7 +248,7 @@ private:
         done.erase(std::unique(done.begin(), done.end()), done.end());
         for (const IdPair &s : done) {
             ++r.polylineSegments;
-            const SurfacePoint A = PointOf(s.first), B = PointOf(s.second);
+            const LocatedPoint A = PointOf(s.first), B = PointOf(s.second);
             if (tr->CommonFace(A, B) >= 0) {
                 if (!AddSubSegment(s.first, s.second)) return false;
                 continue;
@@ -258,7 +258,7 @@ private:
                              " cannot be traced on the surface (the plane section through its ends does not join them)");
             ++r.tracedSegments;
             int prev = s.first;
-            for (const SurfacePoint &q : path) {
+            for (const LocatedPoint &q : path) {
                 const int before = int(plan.newPoints.size());
                 const int id = Register(q);
                 r.tracedCrossings += int(plan.newPoints.size()) - before;
@@ -277,7 +277,7 @@ private:
         for (const auto &fc : faceChords) faces.push_back(fc.first);
         for (const auto &fp : facePoints) faces.push_back(fp.first);
         for (const auto &ep : edgePoints) {
-            const SurfacePoint &s = plan.newPoints[ep.second.front().second - plan.vertexCount];
+            const LocatedPoint &s = plan.newPoints[ep.second.front().second - plan.vertexCount];
             faces.push_back(s.face);
             const int h = plan.adj.twin[3 * s.face + s.edge];
             if (h >= 0) faces.push_back(h / 3);

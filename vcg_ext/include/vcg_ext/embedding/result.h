@@ -52,7 +52,7 @@ struct EmbeddingPlan {
     EmbeddingAdjacency adj;
     double tolerance = 0;
     int vertexCount = 0, faceCount = 0;
-    std::vector<SurfacePoint> newPoints;                   // point id = vertexCount + index
+    std::vector<LocatedPoint> newPoints;                   // point id = vertexCount + index
     std::vector<int> splitFaces;                           // faces to re-triangulate
     std::vector<std::vector<std::array<int, 3>>> pieces;   // per split face: triangles over point ids
     std::vector<std::pair<int, int>> frontEdges;                        // point id pairs (a < b)

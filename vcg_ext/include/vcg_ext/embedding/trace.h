@@ -35,24 +35,24 @@ public:
 
     // Calls fn(face) for every face containing p.
     template <class Fn>
-    void ForEachFaceOf(const SurfacePoint &p, Fn fn) const
+    void ForEachFaceOf(const LocatedPoint &p, Fn fn) const
     {
-        if (p.kind == SurfacePoint::AtVertex) {
+        if (p.kind == LocatedPoint::AtVertex) {
             adj.ForEachFaceAround(p.face, p.vertex, [&](int g, int) { fn(g); });
         } else {
             fn(p.face);
-            if (p.kind == SurfacePoint::OnEdge) {
+            if (p.kind == LocatedPoint::OnEdge) {
                 const int h = adj.twin[3 * p.face + p.edge];
                 if (h >= 0) fn(h / 3);
             }
         }
     }
 
-    bool FaceContains(int f, const SurfacePoint &p) const
+    bool FaceContains(int f, const LocatedPoint &p) const
     {
         switch (p.kind) {
-        case SurfacePoint::AtVertex: return adj.CornerOf(f, p.vertex) >= 0;
-        case SurfacePoint::OnEdge: {
+        case LocatedPoint::AtVertex: return adj.CornerOf(f, p.vertex) >= 0;
+        case LocatedPoint::OnEdge: {
             const int h = adj.twin[3 * p.face + p.edge];
             return f == p.face || (h >= 0 && f == h / 3);
         }
@@ -61,7 +61,7 @@ public:
     }
 
     // A face containing both points, or -1.
-    int CommonFace(const SurfacePoint &a, const SurfacePoint &b) const
+    int CommonFace(const LocatedPoint &a, const LocatedPoint &b) const
     {
         int found = -1;
         ForEachFaceOf(a, [&](int f) {
@@ -73,7 +73,7 @@ public:
     // Fills `path` with the points between a and b (crossings of edges, or vertices), each
     // consecutive pair of a, path..., b sharing a face. False when the section curve from a does
     // not reach b within `maxSteps` faces.
-    bool Trace(const SurfacePoint &a, const SurfacePoint &b, int maxSteps, std::vector<SurfacePoint> &path)
+    bool Trace(const LocatedPoint &a, const LocatedPoint &b, int maxSteps, std::vector<LocatedPoint> &path)
     {
         path.clear();
         EmbedVec chord = b.pos - a.pos;
@@ -101,7 +101,7 @@ public:
 
 private:
     struct Step {
-        SurfacePoint point;
+        LocatedPoint point;
         int face;  // the face holding the sub-segment from the current point to `point`
     };
 
@@ -124,22 +124,22 @@ private:
         return (b - a) ^ (c - a);
     }
 
-    EmbedVec Normal(const SurfacePoint &p) const
+    EmbedVec Normal(const LocatedPoint &p) const
     {
         EmbedVec n(0, 0, 0);
         ForEachFaceOf(p, [&](int f) {
             EmbedVec fn = FaceNormal(f);
             double l = fn.Norm();
-            if (l > 0) n += (p.kind == SurfacePoint::AtVertex ? fn : fn / l);  // vertex: area weighted
+            if (l > 0) n += (p.kind == LocatedPoint::AtVertex ? fn : fn / l);  // vertex: area weighted
         });
         double l = n.Norm();
         return l > 0 ? n / l : n;
     }
 
-    SurfacePoint VertexPoint(int f, int corner) const
+    LocatedPoint VertexPoint(int f, int corner) const
     {
-        SurfacePoint s;
-        s.kind = SurfacePoint::AtVertex;
+        LocatedPoint s;
+        s.kind = LocatedPoint::AtVertex;
         s.face = f;
         s.vertex = adj.fv[f][corner];
         s.pos = P(s.vertex);
@@ -147,10 +147,10 @@ private:
     }
 
     // The crossing of half-edge k of face f (its ends on opposite sides).
-    SurfacePoint EdgePoint(int f, int k, double su, double sw) const
+    LocatedPoint EdgePoint(int f, int k, double su, double sw) const
     {
-        SurfacePoint s;
-        s.kind = SurfacePoint::OnEdge;
+        LocatedPoint s;
+        s.kind = LocatedPoint::OnEdge;
         s.face = f;
         s.edge = k;
         s.t = su / (su - sw);
@@ -184,15 +184,15 @@ private:
     }
 
     // Every way the section curve leaves `p`; faces containing `prev` are not taken (no going back).
-    std::vector<Step> Exits(const SurfacePoint &p, const SurfacePoint *prev, int arrivedThrough) const
+    std::vector<Step> Exits(const LocatedPoint &p, const LocatedPoint *prev, int arrivedThrough) const
     {
         std::vector<Step> out;
         auto blocked = [&](int f) { return prev != nullptr && FaceContains(f, *prev); };
-        if (p.kind == SurfacePoint::AtVertex) {
+        if (p.kind == LocatedPoint::AtVertex) {
             adj.ForEachFaceAround(p.face, p.vertex, [&](int f, int corner) {
                 if (!blocked(f)) FaceExits(f, corner, -1, out);
             });
-        } else if (p.kind == SurfacePoint::OnEdge) {
+        } else if (p.kind == LocatedPoint::OnEdge) {
             const int h = adj.twin[3 * p.face + p.edge];
             if (arrivedThrough < 0 && !blocked(p.face)) FaceExits(p.face, -1, p.edge, out);  // start point: both sides
             if (h >= 0 && h / 3 != arrivedThrough && !blocked(h / 3)) FaceExits(h / 3, -1, h % 3, out);
@@ -202,12 +202,12 @@ private:
         return out;
     }
 
-    bool Walk(const SurfacePoint &a, const Step &firstStep, const SurfacePoint &b, int maxSteps, std::vector<SurfacePoint> &path)
+    bool Walk(const LocatedPoint &a, const Step &firstStep, const LocatedPoint &b, int maxSteps, std::vector<LocatedPoint> &path)
     {
         path.clear();
         if (visitStamp.empty()) visitStamp.assign(adj.fv.size(), 0);  // only when something needs tracing
         if (++stamp == 0) { std::fill(visitStamp.begin(), visitStamp.end(), 0); stamp = 1; }
-        SurfacePoint prev = a;
+        LocatedPoint prev = a;
         Step cur = firstStep;
         for (int steps = 0; steps < maxSteps; ++steps) {
             if (visitStamp[cur.face] == stamp) return false;  // the section curve closed without meeting b
@@ -215,7 +215,7 @@ private:
             path.push_back(cur.point);
             if (CommonFace(cur.point, b) >= 0) return true;
             // Edge crossing: continue in the face across that edge.
-            const int arrived = cur.point.kind == SurfacePoint::OnEdge ? cur.face : -1;
+            const int arrived = cur.point.kind == LocatedPoint::OnEdge ? cur.face : -1;
             std::vector<Step> next = Exits(cur.point, &prev, arrived);
             if (next.empty()) return false;
             const EmbedVec dir = cur.point.pos - prev.pos;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
@@ -30,6 +31,12 @@ inline double AngleBetween(const P3 &u, const P3 &v)
     double c = (u * v) / (nu * nv);
     return std::acos(std::max(-1.0, std::min(1.0, c)));
 }
+
+// Node keys say which input vertex a node is, so that copies of one vertex (on both sides of a
+// front) count as one node: input vertex g has key g; a point made on a front edge, which both
+// patches of the edge hold, has SharedPointKey(k); a node made inside a patch has a key of its own.
+inline int SharedPointKey(int k) { return INT_MIN / 2 + k; }
+inline int OwnNodeKey(int node) { return -1 - node; }
 
 class MixedMesh
 {
@@ -324,7 +331,7 @@ public:
         vertHe.push_back(-1);
         vertFixed.push_back(0);
         vertAlive.push_back(1);
-        vertKey.push_back(-VertexCount());  // negative: never equal to an input vertex index
+        vertKey.push_back(OwnNodeKey(VertexCount() - 1));
         return VertexCount() - 1;
     }
 

@@ -49,7 +49,14 @@ public:
         home.resize(m.VertexCount(), 0);
     }
 
-    struct Stats { int splits = 0, collapses = 0, flips = 0; };
+    struct Stats {
+        int splits = 0, collapses = 0, flips = 0;
+        Stats &operator+=(const Stats &o)
+        {
+            splits += o.splits; collapses += o.collapses; flips += o.flips;
+            return *this;
+        }
+    };
 
     Stats Run(int iterations)
     {

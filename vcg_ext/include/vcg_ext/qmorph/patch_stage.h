@@ -1,0 +1,251 @@
+// What the stages of Q-Morph on one patch share (PatchContext: the working mesh, its input
+// surface, the parameters, the counts) and the base of every stage (PatchStage): the context under
+// short names and the few rating and moving primitives all stages use.
+#ifndef VCG_EXT_QMORPH_PATCH_STAGE_H
+#define VCG_EXT_QMORPH_PATCH_STAGE_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <vcg_ext/qmorph/mixed_mesh.h>
+#include <vcg_ext/qmorph/surface_projector.h>
+
+namespace vcg_ext {
+namespace qmorph {
+
+struct PatchParams {
+    double closedAngle = 3 * M_PI / 4;  // a front angle below this closes that end (Owen: 3pi/4)
+    double sideTolerance = M_PI / 6;    // existing edges within this of the ideal side are used
+    double longSideFactor = std::sqrt(3.0);  // sides longer than this times the base are split
+    double minQuadJacobian = 0.05;      // a quad is formed only when its scaled Jacobian exceeds this
+    double pairMinJacobian = 0.3;       // leftover triangle pairs are merged above this quality
+    double migrationMinJacobian = 0.02; // quads made while bringing distant triangles together
+    bool seams = true;                  // Owen's seam away from the initial front
+    double seamAngle = M_PI / 6;        // front edges meeting at a smaller angle are sewn together
+    bool transitions = true;            // Owen's transition seam and transition split
+    double transitionRatio = 2.5;       // front edges differing more than this in length need a transition
+    double transitionMinLength = 1.5;   // ... when the longer one is also this long (times the patch's mean
+                                        // input edge): short edges get plain seams, no cascade of splits
+    bool preserveInitialFront = true;   // false: a seam may also close onto an initial front edge
+                                        // (its nodes never move: the other node joins them)
+    bool cleanup = true;                // topological clean-up: valence turns and diagonal collapses
+    bool rescueBadQuads = true;         // nodes of quads below 0.3 moved to raise their worst quality
+    int finalSmoothing = 5;             // tangent-plane smoothing sweeps at the end
+    bool smoothing = true;              // local smoothing after each quad + final sweeps
+};
+
+struct PatchStats {
+    int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
+    int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0, seams = 0;
+    int transitionSeams = 0, transitionSplits = 0, diagonalCollapses = 0, quadsOpened = 0;
+
+    PatchStats &operator+=(const PatchStats &o)
+    {
+        quadsFormed += o.quadsFormed; templates += o.templates; swaps += o.swaps; splits += o.splits;
+        failures += o.failures; pairedTriangles += o.pairedTriangles; doublets += o.doublets;
+        iterations += o.iterations; valenceTurns += o.valenceTurns; seams += o.seams;
+        transitionSeams += o.transitionSeams; transitionSplits += o.transitionSplits;
+        diagonalCollapses += o.diagonalCollapses; quadsOpened += o.quadsOpened;
+        return *this;
+    }
+};
+
+struct PatchContext {
+    MixedMesh &m;
+    const SurfaceProjector &proj;  // the patch's input surface
+    std::vector<int> &home;        // per node: a triangle of the input surface near it (projection start)
+    const PatchParams &p;
+    PatchStats stats;
+    int vertexCap;                 // the patch never grows beyond this many nodes: bounds the work on bad input
+    double meanLength = 0;         // mean input edge length of the patch
+    double minLength = 0;          // no split makes edges shorter than this
+
+    // A patch grows to at most this many times its input nodes (plus a few for tiny patches).
+    static constexpr int kVertexCapFactor = 4, kVertexCapSlack = 64;
+    // Splits stop at this fraction of the mean input edge.
+    static constexpr double kMinLengthFraction = 0.02;
+
+    PatchContext(MixedMesh &mesh, const SurfaceProjector &surface, std::vector<int> &homeTriangle, const PatchParams &params)
+        : m(mesh), proj(surface), home(homeTriangle), p(params)
+    {
+        home.resize(m.VertexCount(), 0);
+        vertexCap = kVertexCapFactor * m.VertexCount() + kVertexCapSlack;
+        double sum = 0;
+        int n = 0;
+        for (int h = 0; h < m.HalfEdgeCount(); ++h)
+            if (m.HeAlive(h)) { sum += m.Length(h); ++n; }
+        meanLength = n ? sum / n : 0;
+        minLength = kMinLengthFraction * meanLength;
+    }
+};
+
+class PatchStage
+{
+protected:
+    explicit PatchStage(PatchContext &context)
+        : m(context.m), proj(context.proj), home(context.home), p(context.p), stats(context.stats),
+          vertexCap(context.vertexCap), meanLength(context.meanLength), minLength(context.minLength)
+    {
+    }
+
+    MixedMesh &m;
+    const SurfaceProjector &proj;
+    std::vector<int> &home;
+    const PatchParams &p;
+    PatchStats &stats;
+    const int vertexCap;
+    const double meanLength, minLength;
+
+    // A quad whose shortest side is below this fraction of its longest is as bad as a fold.
+    static constexpr double kNeedleRatio = 0.02;
+    // Triangles are valid when the sine of their smallest angle stays above this: thinner ones
+    // are degenerate once written in float.
+    static constexpr double kMinSine = 1e-3;
+    // Removing nodes or joining them must not flatten the surface by more than this times the
+    // patch's mean input edge.
+    static constexpr double kFlattening = 0.1;
+    // Removed inner nodes stay within this fraction of the new polygon's shortest side.
+    static constexpr double kInnerNodeSideFraction = 0.2;
+    // Edges shorter than this times the minimum length are never split.
+    static constexpr double kUnsplittableFactor = 5;
+    // A quad below this scaled Jacobian is poor: operations must not make quads worse than this (or
+    // than the worst they replace), and quads still below it have their nodes re-placed at the end.
+    static constexpr double kFairQuad = 0.3;
+
+    // Shape of the quad (a b c d): its scaled Jacobian, -1 when it is inverted against the reference
+    // normal n, a needle or has repeated nodes.
+    double QuadShape(int a, int b, int c, int d, const P3 &n) const
+    {
+        if (!m.DistinctNodes({a, b, c, d})) return -1;
+        return QuadShape({m.pos[a], m.pos[b], m.pos[c], m.pos[d]}, n);
+    }
+    static double QuadShape(const std::array<P3, 4> &pos, const P3 &n)
+    {
+        double shortest = 1e300, longest = 0;  // a needle (aspect above 50) is as bad as a fold
+        for (int k = 0; k < 4; ++k) {
+            double l = (pos[(k + 1) % 4] - pos[k]).Norm();
+            shortest = std::min(shortest, l);
+            longest = std::max(longest, l);
+        }
+        if (!(shortest > kNeedleRatio * longest)) return -1;
+        P3 N(0, 0, 0);
+        for (int k = 0; k < 4; ++k) N += pos[k] ^ pos[(k + 1) % 4];
+        double l = N.Norm();
+        if (!(l > 0) || N * n <= 0) return -1;
+        N /= l;
+        double worst = 1;
+        for (int k = 0; k < 4; ++k) {
+            P3 e1 = pos[(k + 1) % 4] - pos[k], e2 = pos[(k + 3) % 4] - pos[k];
+            double d = e1.Norm() * e2.Norm();
+            worst = std::min(worst, d > 0 ? ((e1 ^ e2) * N) / d : -1.0);
+        }
+        return worst;
+    }
+    bool TriPositive(int a, int b, int c, const P3 &n) const
+    {
+        P3 u = m.pos[b] - m.pos[a], v = m.pos[c] - m.pos[a], w = m.pos[c] - m.pos[b];
+        double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
+        double nl = n.Norm();
+        return m.DistinctNodes({a, b, c}) && nl > 0 && (u ^ v) * n > kMinSine * l2 * nl && ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
+    }
+
+    // Shape of any face against reference normal n: a quad's QuadShape, a triangle's quality.
+    double FaceQualityAt(int f, const P3 &n) const
+    {
+        if (!m.IsQuad(f)) return m.TriangleQuality(f, n);
+        const int g = m.faceHe[f];
+        return QuadShape(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]), n);
+    }
+
+    // Moves node v when no face around it folds or gets worse than its worst one (see TryMoveNode).
+    bool TryMove(int v, const P3 &to)
+    {
+        return m.TryMoveNode(v, to, [&](int f, const P3 &n) { return FaceQualityAt(f, n); });
+    }
+
+    // Laplacian target, moved only in the tangent plane, projected back onto the input surface;
+    // kept only when no incident face inverts or degrades below its worst current quality.
+    void SmoothNode(int v)
+    {
+        P3 sum(0, 0, 0);
+        int n = 0;
+        m.ForEachOutgoing(v, [&](int g) {
+            sum += m.pos[m.Dst(g)];
+            ++n;
+        });
+        if (n < 2) return;
+        P3 target = sum / double(n);
+        P3 nv = m.VertexNormal(v);
+        P3 move = target - m.pos[v];
+        move -= nv * (move * nv);
+        TryMove(v, proj.Project(m.pos[v] + move, home[v]));
+    }
+
+    int NewVertexOnEdge(int h, const P3 &point)
+    {
+        int from = m.Org(h);
+        int v = m.SplitEdge(h, point);
+        home.resize(m.VertexCount(), 0);
+        home[v] = home[from];
+        TryMove(v, proj.Project(m.pos[v], home[v]));  // a point of a current edge: back onto the input surface
+        ++stats.splits;
+        return v;
+    }
+
+    bool Splittable(int h) const
+    {
+        int t = m.heTwin[h];
+        return t >= 0 && !m.heInitial[h] && m.IsTri(m.heFace[h]) && m.IsTri(m.heFace[t]) && m.VertexCount() < vertexCap &&
+               m.Length(h) > kUnsplittableFactor * minLength;
+    }
+
+    // Removing inner nodes must not flatten the surface: each removed node must lie close to the
+    // new polygon (its fan of triangles from the first corner; for a quad, the better of its two
+    // diagonals), within a fifth of the polygon's shortest side and a tenth of the mean input edge.
+    bool InnerNodesNearQuad(const std::vector<int> &inner, const std::vector<int> &corners) const
+    {
+        if (inner.empty()) return true;
+        double shortest = 1e300;
+        for (size_t k = 0; k < corners.size(); ++k)
+            shortest = std::min(shortest, (m.pos[corners[(k + 1) % corners.size()]] - m.pos[corners[k]]).Norm());
+        const double tolerance = std::min(kInnerNodeSideFraction * shortest, kFlattening * meanLength);
+        auto worstDistance = [&](size_t first) {  // fan from corner `first`
+            double worst = 0;
+            for (int v : inner) {
+                double best = 1e300;
+                for (size_t k = 1; k + 1 < corners.size(); ++k)
+                    best = std::min(best, PointTriangleDistance(m.pos[v], m.pos[corners[first]],
+                                                                m.pos[corners[(first + k) % corners.size()]],
+                                                                m.pos[corners[(first + k + 1) % corners.size()]]));
+                worst = std::max(worst, best);
+            }
+            return worst;
+        };
+        double d = worstDistance(0);
+        if (corners.size() == 4) d = std::min(d, worstDistance(1));
+        return d <= tolerance;
+    }
+
+    static double PointTriangleDistance(const P3 &p, const P3 &a, const P3 &b, const P3 &c)
+    {
+        P3 n = (b - a) ^ (c - a);
+        double nn = n.SquaredNorm();
+        if (nn > 0) {  // inside the prism over the triangle: distance to the plane
+            P3 q = p - n * (((p - a) * n) / nn);
+            if (((b - a) ^ (q - a)) * n >= 0 && ((c - b) ^ (q - b)) * n >= 0 && ((a - c) ^ (q - c)) * n >= 0) return (p - q).Norm();
+        }
+        auto segment = [&](const P3 &x, const P3 &y) {
+            P3 e = y - x;
+            double t = e.SquaredNorm() > 0 ? std::max(0.0, std::min(1.0, ((p - x) * e) / e.SquaredNorm())) : 0.0;
+            return (p - (x + e * t)).Norm();
+        };
+        return std::min({segment(a, b), segment(b, c), segment(c, a)});
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif
