@@ -66,12 +66,8 @@ bool QMorphFrontPlugin::applySmooth(MeshDocument &md, const RichParameterList &p
     p.iterations = par.getInt("Iterations");
     p.snapPercent = par.getFloat("SnapDistance");
     p.minRegionFaces = par.getInt("MinRegionFaces");
-    std::string bad = p.Validate();
+    std::string bad = Smoothing::Check(mm.cm, p);
     if (!bad.empty()) return fail(name, QString::fromStdString(bad));
-
-    vcg_ext::MeshCheckReport report = vcg_ext::MeshChecks<CMeshO>::Inspect(mm.cm, false);
-    if (report.faces == 0 || report.nonFiniteVertices)
-        return fail(name, QString::fromStdString(report.FirstProblem(false)));
     if (!mm.hasDataMask(MeshModel::MM_FACEQUALITY))
         return fail(name, "the mesh has no face quality (region ids): run 'Segment by Variational Shape Approximation' "
                           "first, or store integral region ids in the face quality");
@@ -79,7 +75,8 @@ bool QMorphFrontPlugin::applySmooth(MeshDocument &md, const RichParameterList &p
     bad = vcg_ext::RegionIds<CMeshO>::Read(mm.cm, faceRegion);
     if (!bad.empty()) return fail(name, QString::fromStdString(bad));
 
-    // The mesh is only read: nothing to enable, nothing to undo on failure.
+    // The mesh is only read: nothing to enable, nothing to undo on failure. (Smooth runs the same
+    // cheap check again: the core must be safe on its own.)
     Smoothing::Result r = Smoothing::Smooth(mm.cm, faceRegion, p, cb);
     if (!r.error.empty()) return fail(name, QString::fromStdString(r.error));
 

@@ -2,7 +2,6 @@
 #include "filter_qmorph_front.h"
 
 #include "front_edges_layer.h"
-#include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/polyline_embedding.h>
 
 typedef vcg_ext::PolylineEmbedding<CMeshO> Embedding;
@@ -78,20 +77,14 @@ bool QMorphFrontPlugin::applySplit(MeshDocument &md, const RichParameterList &pa
 
     Embedding::Params p;
     p.locateTolerancePercent = par.getFloat("LocateTolerance");
-    std::string bad = p.Validate();
-    if (!bad.empty()) return fail(name, QString::fromStdString(bad));
-
-    const vcg_ext::MeshCheckReport report = vcg_ext::MeshChecks<CMeshO>::Inspect(mm.cm, true);
-    bad = report.FirstProblem(false);
-    if (bad.empty() && !report.IsTwoManifold()) bad = report.FirstProblem(true);
-    if (bad.empty() && !report.IsOriented())
-        bad = "the mesh is not consistently oriented (" + std::to_string(report.inconsistentEdges) + " edges)";
-    if (!bad.empty()) return fail(name, QString::fromStdString(bad));
-
-    // Locating, tracing and splitting are planned without touching the mesh: bad input leaves it as it was.
+    // The core checks the parameters and the mesh, then locates, traces and plans the split without
+    // touching the mesh: bad input leaves it as it was.
     Embedding::Plan plan;
     Embedding::Result r = Embedding::Prepare(mm.cm, poly->cm, p, plan, cb);
-    if (!r.error.empty()) return fail(name, "layer '" + poly->label() + "': " + QString::fromStdString(r.error));
+    if (!r.error.empty()) {
+        const QString why = QString::fromStdString(r.error);
+        return fail(name, r.inputProblem ? why : "layer '" + poly->label() + "': " + why);
+    }
 
     // Checks passed: from here on the mesh changes.
     mm.updateDataMask(MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR);

@@ -62,17 +62,15 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
     p.randomSeed = uint32_t(par.getInt("RandomSeed"));
     if (p.mode != VSA::ThresholdSeeding && p.mode != VSA::FixedRegionCount)
         return fail(name, "unknown seeding mode");
-    std::string bad = p.Validate();
-    if (!bad.empty()) return fail(name, QString::fromStdString(bad));
-
-    vcg_ext::MeshCheckReport report = vcg_ext::MeshChecks<CMeshO>::Inspect(mm.cm, false);
-    if (report.faces == 0 || report.nonFiniteVertices)
-        return fail(name, QString::fromStdString(report.FirstProblem(false)));
-
-    // Checks passed: from here on the mesh may change.
+    // The core checks the mesh and the parameters first and leaves the mesh as it is on error; it
+    // needs face-face adjacency and writes the face quality, enabled here and dropped on error.
+    const int added = (MeshModel::MM_FACEFACETOPO | MeshModel::MM_FACEQUALITY) & ~mm.dataMask();
     mm.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_FACEQUALITY);
     VSA::Result r = VSA::Segment(mm.cm, p, cb);
-    if (!r.error.empty()) return fail(name, QString::fromStdString(r.error));
+    if (!r.error.empty()) {
+        mm.clearDataMask(added);
+        return fail(name, QString::fromStdString(r.error));
+    }
     if (par.getBool("ColorByRegion")) {
         mm.updateDataMask(MeshModel::MM_FACECOLOR);
         vcg_ext::RegionIds<CMeshO>::ColorFaces(mm.cm, r.faceRegion);

@@ -57,6 +57,7 @@ public:
         plan = Plan();
         Result r;
         r.error = p.Validate();
+        r.inputProblem = !r.error.empty();
         if (r.error.empty()) {
             embedding::PlanBuilder<MeshType, PolylineType> builder(m, plan, cb);
             r = builder.Run(poly, p.locateTolerancePercent, static_cast<const void *>(&m) == static_cast<const void *>(&poly));

@@ -26,6 +26,8 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <vcg_ext/mesh_checks.h>
+
 namespace vcg_ext {
 
 template <class MeshType>
@@ -77,14 +79,25 @@ public:
         double seconds = 0;
     };
 
-    // Segments `m`; on success writes region ids to face quality (when the mesh has it).
+    // Why `m` cannot be segmented with `p`, or "". Open, non-manifold and multi-component meshes
+    // are fine, and so are degenerate faces (they get a region without NaNs).
+    static std::string Check(const MeshType &m, const Params &p)
+    {
+        std::string why = p.Validate();
+        if (!why.empty()) return why;
+        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m, false);
+        if (report.faces == 0 || report.nonFiniteVertices) return report.FirstProblem(false);
+        return "";
+    }
+
+    // Segments `m` (after Check: on error it is left as it is); on success writes region ids to
+    // face quality (when the mesh has it).
     static Result Segment(MeshType &m, const Params &p, vcg::CallBackPos *cb = nullptr)
     {
         auto t0 = std::chrono::steady_clock::now();
         Result res;
-        res.error = p.Validate();
+        res.error = Check(m, p);
         if (!res.error.empty()) return res;
-        if (m.fn == 0) { res.error = "the mesh has no faces"; return res; }
         vcg::tri::RequireFFAdjacency(m);
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
 

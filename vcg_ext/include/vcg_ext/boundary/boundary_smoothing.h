@@ -70,20 +70,26 @@ public:
         double topologySeconds = 0, graphSeconds = 0, straightenSeconds = 0, seconds = 0;
     };
 
+    // Why the boundaries of `m` cannot be smoothed with `p`, or "" (the region ids are checked by
+    // Smooth: integral labels come from RegionIds).
+    static std::string Check(const MeshType &m, const Params &p)
+    {
+        std::string why = p.Validate();
+        if (!why.empty()) return why;
+        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m, false);
+        if (report.faces == 0 || report.nonFiniteVertices) return report.FirstProblem(false);
+        return "";
+    }
+
     // faceRegion: region id per face index (deleted faces ignored). The mesh is not modified.
     static Result Smooth(const MeshType &m, const std::vector<int> &faceRegion, const Params &p, vcg::CallBackPos *cb = nullptr)
     {
         typedef std::chrono::steady_clock Clock;
         auto t0 = Clock::now();
         Result r;
-        r.error = p.Validate();
+        r.error = Check(m, p);
         if (!r.error.empty()) return r;
         if (faceRegion.size() != m.face.size()) { r.error = "one region id per face is needed"; return r; }
-        if (m.fn == 0) { r.error = "the mesh has no faces"; return r; }
-        if (MeshChecks<MeshType>::CountNonFiniteVertices(m)) {
-            r.error = "the mesh has vertices with NaN or infinite coordinates";
-            return r;
-        }
         if (cb) cb(0, "Region boundaries: mesh topology");
         r.topology.Build(m);
         auto t1 = Clock::now();

@@ -43,9 +43,12 @@ public:
         if (polyIsMesh) return Fail("the polyline layer is the mesh itself");
         if (poly.en == 0) return Fail(poly.fn > 0 ? "the polyline layer has no edges (it is a triangle mesh, not a polyline)"
                                                   : "the polyline layer has no edges");
-        if (m.fn == 0) return Fail("the mesh has no faces");
         Lap lap;
-        if (MeshChecks<MeshType>::CountNonFiniteVertices(m)) return Fail("the mesh has vertices with NaN or infinite coordinates");
+        const std::string meshProblem = CheckMesh(m);
+        if (!meshProblem.empty()) {
+            r.inputProblem = true;
+            return Fail(meshProblem);
+        }
         Progress(cb, 2, "Split along front: adjacency");
         std::string bad = plan.adj.Build(m);
         if (!bad.empty()) return Fail(bad);
@@ -97,6 +100,18 @@ private:
     std::unordered_map<int, std::vector<IdPair>> faceChords;       // face -> segments inside it
     std::vector<AlongEdge> along;                                  // segments along mesh edges
     std::vector<IdPair> front;
+
+    // The mesh must be a consistently oriented 2-manifold without degenerate or duplicate faces
+    // (open and multi-component meshes are fine).
+    static std::string CheckMesh(const MeshType &m)
+    {
+        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m, true);
+        std::string why = report.FirstProblem(false);
+        if (why.empty() && !report.IsTwoManifold()) why = report.FirstProblem(true);
+        if (why.empty() && !report.IsOriented())
+            why = "the mesh is not consistently oriented (" + std::to_string(report.inconsistentEdges) + " edges)";
+        return why;
+    }
 
     Result Fail(const std::string &why)
     {

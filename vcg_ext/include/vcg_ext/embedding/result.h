@@ -22,6 +22,7 @@ namespace embedding {
 
 struct EmbeddingResult {
     std::string error;           // empty on success
+    bool inputProblem = false;   // the error is about the mesh or the parameters (else the polylines)
     double tolerance = 0;        // locate tolerance, absolute
     int polylinePoints = 0;      // polyline vertices used by its edges
     int polylineSegments = 0;    // polyline edges embedded (zero-length ones skipped)
