@@ -11,6 +11,8 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/polygon_geometry.h>
+
 namespace vcg_ext {
 
 struct PolygonMesh {
@@ -33,30 +35,18 @@ class QuadQuality
 public:
     typedef vcg::Point3<double> P3;
 
-    // Scaled Jacobian: min over corners of ((e1 x e2) . n) / (|e1||e2|), n the unit normal of the
-    // quad (Newell); 1 for a square, <= 0 when a corner is reflex or the quad is folded.
+    // Scaled Jacobian against the quad's own normal (see polygon_geometry.h).
     static double ScaledJacobian(const P3 &a, const P3 &b, const P3 &c, const P3 &d)
     {
-        const P3 v[4] = {a, b, c, d};
-        P3 n(0, 0, 0);
-        for (int k = 0; k < 4; ++k) n += v[k] ^ v[(k + 1) % 4];
-        double l = n.Norm();
-        if (!(l > 0)) return -1;
-        n /= l;
-        double worst = 1;
-        for (int k = 0; k < 4; ++k) {
-            P3 e1 = v[(k + 1) % 4] - v[k], e2 = v[(k + 3) % 4] - v[k];
-            double den = e1.Norm() * e2.Norm();
-            worst = std::min(worst, den > 0 ? ((e1 ^ e2) * n) / den : -1.0);
-        }
-        return worst;
+        const P3 q[4] = {a, b, c, d};
+        return vcg_ext::ScaledJacobian(q);
     }
 
     static double Area(const PolygonMesh &pm, const std::vector<int> &f)
     {
-        P3 n(0, 0, 0);
-        for (size_t k = 0; k < f.size(); ++k) n += pm.points[f[k]] ^ pm.points[f[(k + 1) % f.size()]];
-        return 0.5 * n.Norm();
+        std::vector<P3> p(f.size());
+        for (size_t k = 0; k < f.size(); ++k) p[k] = pm.points[f[k]];
+        return VectorArea(p.data(), int(p.size())).Norm();
     }
 
     // Irregular vertex: not on the mesh boundary, all its faces quads, valence != 4.

@@ -23,6 +23,7 @@
 #include <vcg/complex/complex.h>
 #include <vcg/space/index/grid_util.h>
 
+#include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/embedding/adjacency.h>
 
 namespace vcg_ext {
@@ -44,28 +45,6 @@ struct LocatedPoint {
     EmbedVec bary = EmbedVec(0, 0, 0);  // InFace: barycentric coordinates in `face`
     EmbedVec pos = EmbedVec(0, 0, 0);   // the re-projected position
 };
-
-// Closest point on triangle (a, b, c) to p (Ericson, Real-Time Collision Detection, 5.1.5).
-inline EmbedVec ClosestPointOnTriangle(const EmbedVec &p, const EmbedVec &a, const EmbedVec &b, const EmbedVec &c)
-{
-    const EmbedVec ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab * ap, d2 = ac * ap;
-    if (d1 <= 0 && d2 <= 0) return a;
-    const EmbedVec bp = p - b;
-    const double d3 = ab * bp, d4 = ac * bp;
-    if (d3 >= 0 && d4 <= d3) return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-    const EmbedVec cp = p - c;
-    const double d5 = ab * cp, d6 = ac * cp;
-    if (d6 >= 0 && d5 <= d6) return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double denom = 1.0 / (va + vb + vc);
-    return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 // Parameter of the projection of p on segment a-b (unclamped).
 inline double SegmentParameter(const EmbedVec &p, const EmbedVec &a, const EmbedVec &b)

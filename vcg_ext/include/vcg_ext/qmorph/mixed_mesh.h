@@ -18,19 +18,13 @@
 #include <vcg/space/point3.h>
 
 #include <vcg_ext/common/edge_pairing.h>
+#include <vcg_ext/common/polygon_geometry.h>
 
 namespace vcg_ext {
 namespace qmorph {
 
 typedef vcg::Point3<double> P3;
 
-inline double AngleBetween(const P3 &u, const P3 &v)
-{
-    double nu = u.Norm(), nv = v.Norm();
-    if (!(nu > 0 && nv > 0)) return 0;
-    double c = (u * v) / (nu * nv);
-    return std::acos(std::max(-1.0, std::min(1.0, c)));
-}
 
 // Node keys say which input vertex a node is, so that copies of one vertex (on both sides of a
 // front) count as one node: input vertex g has key g; a point made on a front edge, which both
@@ -225,16 +219,13 @@ public:
     // Corner angle of the face of h at the origin of h.
     double CornerAngle(int h) const { return AngleBetween(pos[Dst(h)] - pos[Org(h)], pos[Org(hePrev[h])] - pos[Org(h)]); }
 
-    // Area-weighted normal of a face (Newell's formula: also right for non-planar quads).
+    // Vector area of a face: its normal times its area (right for non-planar quads too).
     P3 FaceNormal(int f) const
     {
-        P3 n(0, 0, 0);
+        P3 p[4];
         int h = faceHe[f];
-        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) {
-            const P3 &a = pos[Org(h)], &b = pos[Dst(h)];
-            n += P3((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]), (a[0] - b[0]) * (a[1] + b[1]));
-        }
-        return n * 0.5;
+        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) p[k] = pos[Org(h)];
+        return VectorArea(p, faceSize[f]);
     }
     // Unit normal of a node from its faces (all in one patch: never averaged across a crease).
     P3 VertexNormal(int v) const
@@ -307,21 +298,13 @@ public:
         return false;
     }
 
-    // Scaled Jacobian of a quad: min over corners of (e1 x e2).n / (|e1||e2|).
+    // Scaled Jacobian of quad f against its own normal (polygon_geometry.h).
     double QuadScaledJacobian(int f) const
     {
-        P3 n = FaceNormal(f);
-        double l = n.Norm();
-        if (!(l > 0)) return -1;
-        n /= l;
-        double worst = 1;
+        P3 q[4];
         int h = faceHe[f];
-        for (int k = 0; k < 4; ++k, h = heNext[h]) {
-            P3 e1 = Vec(h), e2 = pos[Org(hePrev[h])] - pos[Org(h)];
-            double d = e1.Norm() * e2.Norm();
-            worst = std::min(worst, d > 0 ? ((e1 ^ e2) * n) / d : -1.0);
-        }
-        return worst;
+        for (int k = 0; k < 4; ++k, h = heNext[h]) q[k] = pos[Org(h)];
+        return ScaledJacobian(q);
     }
 
     // ---- construction -------------------------------------------------------------------------

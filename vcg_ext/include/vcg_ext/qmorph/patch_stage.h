@@ -123,25 +123,17 @@ protected:
     }
     static double QuadShape(const std::array<P3, 4> &pos, const P3 &n)
     {
-        double shortest = 1e300, longest = 0;  // a needle (aspect above 50) is as bad as a fold
+        double shortest = 1e300, longest = 0;  // a needle is as bad as a fold
         for (int k = 0; k < 4; ++k) {
             double l = (pos[(k + 1) % 4] - pos[k]).Norm();
             shortest = std::min(shortest, l);
             longest = std::max(longest, l);
         }
         if (!(shortest > kNeedleRatio * longest)) return -1;
-        P3 N(0, 0, 0);
-        for (int k = 0; k < 4; ++k) N += pos[k] ^ pos[(k + 1) % 4];
-        double l = N.Norm();
+        const P3 N = VectorArea(pos.data(), 4);
+        const double l = N.Norm();
         if (!(l > 0) || N * n <= 0) return -1;
-        N /= l;
-        double worst = 1;
-        for (int k = 0; k < 4; ++k) {
-            P3 e1 = pos[(k + 1) % 4] - pos[k], e2 = pos[(k + 3) % 4] - pos[k];
-            double d = e1.Norm() * e2.Norm();
-            worst = std::min(worst, d > 0 ? ((e1 ^ e2) * N) / d : -1.0);
-        }
-        return worst;
+        return ScaledJacobian(pos.data(), N / l);
     }
     bool TriPositive(int a, int b, int c, const P3 &n) const
     {
@@ -226,22 +218,6 @@ protected:
         double d = worstDistance(0);
         if (corners.size() == 4) d = std::min(d, worstDistance(1));
         return d <= tolerance;
-    }
-
-    static double PointTriangleDistance(const P3 &p, const P3 &a, const P3 &b, const P3 &c)
-    {
-        P3 n = (b - a) ^ (c - a);
-        double nn = n.SquaredNorm();
-        if (nn > 0) {  // inside the prism over the triangle: distance to the plane
-            P3 q = p - n * (((p - a) * n) / nn);
-            if (((b - a) ^ (q - a)) * n >= 0 && ((c - b) ^ (q - b)) * n >= 0 && ((a - c) ^ (q - c)) * n >= 0) return (p - q).Norm();
-        }
-        auto segment = [&](const P3 &x, const P3 &y) {
-            P3 e = y - x;
-            double t = e.SquaredNorm() > 0 ? std::max(0.0, std::min(1.0, ((p - x) * e) / e.SquaredNorm())) : 0.0;
-            return (p - (x + e * t)).Norm();
-        };
-        return std::min({segment(a, b), segment(b, c), segment(c, a)});
     }
 };
 

@@ -12,6 +12,7 @@
 #include <vcg/space/point3.h>
 
 #include <vcg_ext/common/edge_pairing.h>
+#include <vcg_ext/common/polygon_geometry.h>
 
 namespace vcg_ext {
 
@@ -52,29 +53,24 @@ public:
         return best;
     }
 
-    // Closest point on triangle t; exitEdge = the edge (k: v[k]->v[k+1]) the point was clamped to
-    // when the projection falls outside it, else -1.
+    // Closest point on triangle t; exitEdge = the edge (k: v[k]->v[k+1]) to walk across when the
+    // closest point is on the triangle's border and p lies outside that edge (the most violated
+    // one), else -1.
     P3 ClosestOnTriangle(const P3 &p, int t, int &exitEdge) const
     {
         const P3 &a = pts[tri[t][0]], &b = pts[tri[t][1]], &c = pts[tri[t][2]];
-        P3 n = (b - a) ^ (c - a);
-        double nn = n.SquaredNorm();
         exitEdge = -1;
-        if (!(nn > 0)) return a;
-        P3 q = p - n * (((p - a) * n) / nn);  // projection on the plane
-        // barycentric signs: which edge is q outside of (most violated)
+        TriangleFeature on;
+        const P3 q = ClosestPointOnTriangle(p, a, b, c, &on);
+        if (on == InsideTriangle) return q;
+        const P3 n = (b - a) ^ (c - a);
         const P3 *v[3] = {&a, &b, &c};
         double worst = 0;
         for (int k = 0; k < 3; ++k) {
-            double s = ((*v[(k + 1) % 3] - *v[k]) ^ (q - *v[k])) * n;
+            const double s = ((*v[(k + 1) % 3] - *v[k]) ^ (p - *v[k])) * n;
             if (s < worst) { worst = s; exitEdge = k; }
         }
-        if (exitEdge < 0) return q;
-        // clamp onto the violated edge's segment
-        const P3 &e0 = *v[exitEdge], &e1 = *v[(exitEdge + 1) % 3];
-        P3 d = e1 - e0;
-        double t01 = std::max(0.0, std::min(1.0, ((q - e0) * d) / std::max(d.SquaredNorm(), 1e-300)));
-        return e0 + d * t01;
+        return q;
     }
 
 private:
