@@ -1,4 +1,4 @@
-// The CGAL side of the VSA comparison (issue 2, section 6), behind a plain interface so that CGAL
+// The CGAL side of the VSA comparison, behind a plain interface so that CGAL
 // is compiled in its own translation unit (bench_cgal.cpp; bench_cgal_stub.cpp without CGAL).
 #ifndef QMF_BENCH_CGAL_H
 #define QMF_BENCH_CGAL_H

@@ -1,4 +1,4 @@
-// qmf_bench: the project's benchmark program (issues 2-5; not a test, never run by CTest).
+// qmf_bench: the project's benchmark program (not a test, never run by CTest).
 //
 // Per mesh, the whole pipeline with the filters' default parameters, each stage timed on the core
 // (vcg_ext/, the same calls the plugin makes, on a float mesh like MeshLab's CMeshO):
@@ -120,7 +120,7 @@ const TableDef &Def(int t)
          "closed, 2-manifold, consistently oriented. chi: V - E + F of the input and of the output polygon mesh. front "
          "kept: every selected edge of the split mesh is an output edge and the selection is unchanged. peak memory: "
          "VmHWM of the mesh's process during the 4 stages (VmHWM reset before stage 1)."},
-        {"Quality bars (issue 5) - pass / fail",
+        {"Quality bars - pass / fail",
          {"mesh", "quad area >= 95 %", "quads >= 90 %", "no inversion", "mean SJ >= 0.75", "< 2 % below 0.3",
           "irregular <= 20 %", "Hausdorff <= 0.5 %", "closed 2-manifold", "genus kept", "front kept", "all"},
          ""},

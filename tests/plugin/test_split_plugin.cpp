@@ -134,7 +134,7 @@ TEST(SplitPlugin, SplitsAlongTheFrontSelectsEdgesRelabelsAndAddsTheEdgeLayer)
             if (mesh->cm.vert[v].cP() == e.cV(0)->cP()) a = v;
             if (mesh->cm.vert[v].cP() == e.cV(1)->cP()) b = v;
         }
-        layerEdges.insert(Ordered(a, b));
+        layerEdges.insert(vcg_ext::UndirectedPair(a, b));
     }
     const std::vector<std::pair<int, int>> fromLayer(layerEdges.begin(), layerEdges.end());
     EXPECT_EQ(fromLayer, front);
@@ -283,7 +283,7 @@ TEST(SplitPlugin, BadInputIsRefusedAndNothingChanges)
     }
 }
 
-// The pipeline test: segmentation + smoothing + splitting on fandisk and elephant.
+// Segmentation + smoothing + splitting on fandisk and elephant.
 TEST(SplitPlugin, PipelineOnFandiskAndElephant)
 {
     for (const char *name : {"fandisk", "elephant"}) {

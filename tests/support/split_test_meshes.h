@@ -23,13 +23,34 @@
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg_ext/common/front_edges.h>
 #include <vcg_ext/mesh_checks.h>
+#include <vcg_ext/polyline_embedding.h>
 
 namespace qmf_test {
 namespace split {
 
 typedef vcg::Point3d D3;
 
-inline std::pair<int, int> Ordered(int a, int b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+
+typedef vcg_ext::PolylineEmbedding<TMesh> Embedding;
+
+inline void Copy(TMesh &dst, const TMesh &src) { vcg::tri::Append<TMesh, TMesh>::MeshCopy(dst, const_cast<TMesh &>(src)); }
+
+inline Embedding::Result Embed(TMesh &m, const TMesh &poly, double tolPercent = 1e-4)
+{
+    Embedding::Params p;
+    p.locateTolerancePercent = tolPercent;
+    return Embedding::Embed(m, poly, p);
+}
+
+// Regular tetrahedron-like closed mesh, outward oriented.
+inline void MakeTetra(TMesh &m)
+{
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0), P3(0, 0, 1)}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+}
+
+inline P3 Lerp(const P3 &a, const P3 &b, float t) { return a + (b - a) * t; }
+
+inline int CountSelectedEdges(const TMesh &m) { return int(vcg_ext::FrontEdges<TMesh>::Collect(m).size()); }
 
 // An edge-only mesh through `pts` (closed: last joined to first).
 inline void MakePolyline(TMesh &poly, const std::vector<P3> &pts, bool closed = false)
@@ -67,7 +88,7 @@ inline bool PlaneSectionPolyline(const TMesh &m, const D3 &n, double d, TMesh &p
             if (sa == 0 || sb == 0) return false;
             if ((sa < 0) == (sb < 0)) continue;
             int ia = int(vcg::tri::Index(m, a)), ib = int(vcg::tri::Index(m, b));
-            auto key = Ordered(ia, ib);
+            auto key = vcg_ext::UndirectedPair(ia, ib);
             auto it = pointOf.find(key);
             if (it == pointOf.end()) {
                 const double t = sa / (sa - sb);
@@ -94,7 +115,7 @@ inline void RegionBoundaryPolyline(const TMesh &m, TMesh &poly)
     std::map<std::pair<int, int>, std::vector<int>> faceIds;
     for (const TFace &f : m.face)
         for (int k = 0; k < 3; ++k) {
-            auto key = Ordered(int(vcg::tri::Index(m, f.cV(k))), int(vcg::tri::Index(m, f.cV((k + 1) % 3))));
+            auto key = vcg_ext::UndirectedPair(int(vcg::tri::Index(m, f.cV(k))), int(vcg::tri::Index(m, f.cV((k + 1) % 3))));
             faceIds[key].push_back(int(f.cQ()));
         }
     std::map<int, int> pointOf;
@@ -241,13 +262,13 @@ inline void ExpectSplitInvariants(const TMesh &before, const TMesh &after, const
         if (f.IsD()) continue;
         if (f.cFlags() & (TFace::FAUX0 | TFace::FAUX1 | TFace::FAUX2)) ++faux;
         for (int k = 0; k < 3; ++k)
-            edgeFaces[Ordered(int(vcg::tri::Index(after, f.cV(k))), int(vcg::tri::Index(after, f.cV((k + 1) % 3))))].push_back(&f);
+            edgeFaces[vcg_ext::UndirectedPair(int(vcg::tri::Index(after, f.cV(k))), int(vcg::tri::Index(after, f.cV((k + 1) % 3))))].push_back(&f);
     }
     std::map<int, std::set<int>> selectedGraph;
     for (auto &e : edgeFaces) {
         const TFace *f = e.second[0];
         int k = 0;
-        while (k < 3 && Ordered(int(vcg::tri::Index(after, f->cV(k))), int(vcg::tri::Index(after, f->cV((k + 1) % 3)))) != e.first) ++k;
+        while (k < 3 && vcg_ext::UndirectedPair(int(vcg::tri::Index(after, f->cV(k))), int(vcg::tri::Index(after, f->cV((k + 1) % 3)))) != e.first) ++k;
         const bool selected = f->IsFaceEdgeS(k);
         if (selected) { selectedGraph[e.first.first].insert(e.first.second); selectedGraph[e.first.second].insert(e.first.first); }
         if (e.second.size() != 2) continue;

@@ -174,7 +174,6 @@ inline bool LoadOff(TMesh &m, const std::string &path)
 
 // Folders set by CMake: meshes extracted from Debian packages at set-up, and tests/data.
 inline std::string MeshDir() { return QMF_TEST_MESH_DIR; }
-inline std::string DataDir() { return QMF_TEST_DATA_DIR; }
 
 inline double TotalArea(const TMesh &m)
 {

@@ -35,6 +35,14 @@ inline int OwnNodeKey(int node) { return -1 - node; }
 class MixedMesh
 {
 public:
+    // Node moves: no face around may fall to this quality (folded), nor below min(worst before, fair).
+    static constexpr double kMinMoveQuality = 1e-3, kFairMoveQuality = 0.2;
+    // Flips: only between triangles this close to coplanar; new triangles keep this sine of their
+    // smallest angle.
+    static constexpr double kMaxFlipDihedralDeg = 25, kMinFlipSine = 1e-3;
+    // A quad never encloses more triangles: bounds the work on a bad loop.
+    static constexpr size_t kMaxEnclosed = 4096;
+
     // vertices
     std::vector<P3> pos;
     std::vector<int> vertHe;      // an outgoing half-edge (a boundary one when the vertex is on the boundary)
@@ -285,13 +293,14 @@ public:
         return faces;
     }
 
-    // Moves node v to `to` when no face around it folds or gets worse than the worst one now (or
-    // than 0.2); quality(f, n) rates face f against its unit normal from before the move.
+    // Moves node v to `to` when no face around it folds (quality kMinMoveQuality) or gets worse than
+    // the worst one now or than kFairMoveQuality; quality(f, n) rates face f against its unit
+    // normal from before the move.
     template <class Quality>
     bool TryMoveNode(int v, const P3 &to, Quality quality)
     {
         const std::pair<double, double> worst = WorstQualityIfMoved({v}, to, FacesAround({v}), quality);
-        if (worst.second > 1e-3 && worst.second >= std::min(worst.first, 0.2)) {
+        if (worst.second > kMinMoveQuality && worst.second >= std::min(worst.first, kFairMoveQuality)) {
             pos[v] = to;
             return true;
         }
@@ -367,15 +376,15 @@ public:
         P3 n1 = FaceNormal(heFace[h]), n2 = FaceNormal(heFace[t]);
         P3 n = n1 + n2;
         if (!(n.Norm() > 0)) return false;
-        // across a ridge a flip would change the surface (cut or fill the ridge): refuse beyond 25 deg
-        if ((n1 * n2) < std::cos(25 * M_PI / 180) * n1.Norm() * n2.Norm()) return false;
+        // across a ridge a flip would change the surface (cut or fill the ridge): refused
+        if ((n1 * n2) < std::cos(kMaxFlipDihedralDeg * M_PI / 180) * n1.Norm() * n2.Norm()) return false;
         // the new triangles (c a d) and (d b c) must be positive, and not slivers that would be
-        // degenerate once written in float (sine of the smallest angle above 1e-3)
+        // degenerate once written in float (sine of the smallest angle above kMinFlipSine)
         n.Normalize();
         auto positive = [&](int x, int y, int z) {
             P3 u = pos[y] - pos[x], v = pos[z] - pos[x], w = pos[z] - pos[y];
             double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
-            return (u ^ v) * n > 1e-3 * l2;
+            return (u ^ v) * n > kMinFlipSine * l2;
         };
         return positive(c, a, d) && positive(d, b, c);
     }
@@ -434,7 +443,7 @@ public:
         for (int h : loop)
             if (!IsTri(heFace[h])) return false;
         faces.push_back(stack[0]);
-        const size_t cap = 4096;  // a quad never encloses more; bounds the work on a bad loop
+        const size_t cap = kMaxEnclosed;
         while (!stack.empty()) {
             int f = stack.back();
             stack.pop_back();

@@ -70,6 +70,10 @@ public:
     }
 
 private:
+    // Botsch-Kobbelt's bounds: split above 4/3 L, collapse below 4/5 L; a collapse leaves the
+    // triangles around at least this good.
+    static constexpr double kSplitAbove = 4.0 / 3.0, kCollapseBelow = 0.8, kMinCollapseQuality = 0.1;
+
     MixedMesh &m;
     const SurfaceProjector &proj;
     std::vector<int> &home;
@@ -84,7 +88,7 @@ private:
 
     void SplitLongEdges()
     {
-        const double hi2 = (4.0 / 3.0 * L) * (4.0 / 3.0 * L);
+        const double hi2 = (kSplitAbove * L) * (kSplitAbove * L);
         const int count = m.HalfEdgeCount();  // edges made by this pass are already short enough
         for (int h = 0; h < count; ++h) {
             if (!Interior(h) || m.heTwin[h] < h || m.Vec(h).SquaredNorm() <= hi2) continue;
@@ -100,7 +104,7 @@ private:
 
     void CollapseShortEdges()
     {
-        const double lo2 = (0.8 * L) * (0.8 * L), hi = 4.0 / 3.0 * L;
+        const double lo2 = (kCollapseBelow * L) * (kCollapseBelow * L), hi = kSplitAbove * L;
         for (int h = 0; h < m.HalfEdgeCount(); ++h) {
             if (!Interior(h) || m.Vec(h).SquaredNorm() >= lo2) continue;
             const int x = m.Org(h), y = m.Dst(h);
@@ -119,7 +123,7 @@ private:
                 m.ForEachOutgoing(y, [&](int g) { if (m.Dst(g) != x && m.NewChordBetweenFrontNodes(x, m.Dst(g))) ok = false; });
             if (!ok) continue;
             const std::vector<int> around = m.FacesAround({x, y}, {m.heFace[h], m.heFace[m.heTwin[h]]});
-            if (m.WorstQualityIfMoved({x, y}, at, around, [&](int f, const P3 &n) { return m.TriangleQuality(f, n); }).second <= 0.1)
+            if (m.WorstQualityIfMoved({x, y}, at, around, [&](int f, const P3 &n) { return m.TriangleQuality(f, n); }).second <= kMinCollapseQuality)
                 continue;
             if (m.CollapseEdge(h, at)) ++stats.collapses;
         }
