@@ -3,7 +3,8 @@
 # the real meshlabserver, one call per step (the shipped scripts cut into steps, default
 # parameters), and write the results, a report and pictures into out/<mesh>/.
 #   scripts/demo.sh [mesh.off|mesh.ply|mesh.obj|mesh.stl]     (default: fandisk from .deps/meshes)
-# Environment: BUILD_DIR (default build/), OUT_ROOT (default out/).
+# Environment: BUILD_DIR (default build/), OUT_ROOT (default out/), QMF_VIEW="azimuth,elevation" (the
+# overall pictures' view in degrees, +Y up; default: the view that shows most of the regions).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
@@ -61,11 +62,11 @@ step_script() {  # step_script OUT.mlx BLOCK...
 }
 step_script "$RUN/step1.mlx" "$(filter_block "Segment by Variational Shape Approximation" "$SCRIPTS/vsa_segment.mlx")"
 step_script "$RUN/step2.mlx" "$(filter_block "Smooth Region Boundaries" "$SCRIPTS/smooth_boundaries.mlx")"
-# step 3 loads the mesh and the polylines as two layers: the last one loaded is current, so MeshLab's
-# own layer filter makes the mesh (layer 0) current again before the split
-step_script "$RUN/step3.mlx" ' <filter name="Change the current layer">
-  <Param type="RichMesh" name="layer" value="0"/>
- </filter>' "$(filter_block "Split Triangles along Front" "$SCRIPTS/split_along_front.mlx")"
+# Step 3 re-runs step 2 in memory (milliseconds) instead of reading front.obj back: MeshLab's OBJ
+# writer keeps 6 decimals, and the split along rounded curves can end in slightly different quads
+# than the whole-pipeline script gives. The step's figures are the Split filter's own.
+step_script "$RUN/step3.mlx" "$(filter_block "Smooth Region Boundaries" "$SCRIPTS/split_along_front.mlx")" \
+  "$(filter_block "Split Triangles along Front" "$SCRIPTS/split_along_front.mlx")"
 # relative export path: meshlabserver runs in $OUT, so no path needs escaping for XML or sed
 step_script "$RUN/step4.mlx" "$(filter_block "Q-Morph Quad Conversion" "$SCRIPTS/qmorph.mlx" |
   sed 's|name="ExportPath" value=""|name="ExportPath" value="quads.obj"|')"
@@ -75,7 +76,9 @@ STEP_NAMES=("" "Segment by Variational Shape Approximation" "Smooth Region Bound
             "Split Triangles along Front" "Q-Morph Quad Conversion")
 now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
 progress() { printf '[%3d%%] step %d/4 %s: %s\n' "$(( ($1 - 1) * 25 + $2 ))" "$1" "${STEP_NAMES[$1]}" "$3"; }
-log_lines() { sed -n 's/^LOG: [0-9]* //p' "$RUN/step$1.log"; }
+LOG_PREFIX=("" "VSA:" "Smooth Region Boundaries:" "Split Triangles along Front:" "Q-Morph")
+# the step's own filter log lines (meshlabserver prints them as "LOG: <level> <text>")
+log_lines() { sed -n 's/^LOG: [0-9]* //p' "$RUN/step$1.log" | grep -F -- "${LOG_PREFIX[$1]}" || true; }
 # the filter's own time: the first "<seconds> s" ending a clause of its log
 filter_seconds() { log_lines "$1" | grep -oE '[0-9]+\.[0-9]+ s(;|$)' | head -n1 | grep -oE '[0-9]+\.[0-9]+' || echo "?"; }
 summary() {
@@ -112,21 +115,23 @@ run_step() {  # run_step N OUTPUT_FILE... -- MESHLABSERVER_ARGS...
 
 run_step 1 regions.ply -- -i "$MESH" -s "$RUN/step1.mlx" -o regions.ply -m fq fc
 run_step 2 front.obj -- -i regions.ply -s "$RUN/step2.mlx" -o front.obj -l 1
-run_step 3 split.ply -- -i regions.ply -i front.obj -s "$RUN/step3.mlx" -o split.ply -l 0 -m ff fq fc
+run_step 3 split.ply -- -i regions.ply -s "$RUN/step3.mlx" -o split.ply -m ff fq fc
 run_step 4 quads_polygonal.ply quads.obj -- -i split.ply -s "$RUN/step4.mlx" -o quads_polygonal.ply -m ff fq fc
 
 # Quality tables, per-quad scaled Jacobians and the picture scenes, from the product's own code.
 ( cd "$OUT" && "$REPORT_TOOL" --input "$MESH" --split split.ply --quads quads_polygonal.ply --quads-obj quads.obj \
-    --regions regions.ply --front front.obj --jacobians scaled_jacobian.dat --render-dir run/render ) \
+    --regions regions.ply --front front.obj --jacobians scaled_jacobian.dat --render-dir run/render --resolution 1200x900 --supersample 2 \
+    ${QMF_VIEW:+--view "$QMF_VIEW"} ) \
   > "$RUN/quality.md" 2> "$RUN/qmf_report.log" || { cat "$RUN/qmf_report.log" >&2; fail "qmf_report failed"; }
 
-# Pictures: f3d renders each scene (two at a time), then the picture is brightened (f3d 1.3's
-# lights leave a white surface facing the camera at about 55% grey; no option changes that).
+# Pictures: f3d renders each scene (two at a time) at twice the size, then the picture is scaled
+# down (smooth edges thinner than a pixel) and brightened (f3d 1.3's lights leave a white surface
+# facing the camera at about 55% grey; no option changes that).
 render() {
   local view="$1" args
   mapfile -t args < "$RUN/render/$view.args"
   f3d "$RUN/render/$view.ply" "${args[@]}" --output="$OUT/$view.png" > "$RUN/render/$view.log" 2>&1 &&
-    convert "$OUT/$view.png" -level 0%,62% -modulate 100,125 "$OUT/$view.png"
+    convert "$OUT/$view.png" -resize 50% -level 0%,62% -modulate 100,125 "$OUT/$view.png"
 }
 PICTURES=(regions front quads closeup)
 pids=()

@@ -4,7 +4,13 @@
 // scaled Jacobians for a histogram and, with --render-dir, the scenes of the demo's pictures.
 //
 //   qmf_report --input IN --split split.ply --quads quads_polygonal.ply [--quads-obj quads.obj]
-//              [--regions regions.ply --front front.obj --render-dir DIR] [--jacobians FILE]
+//              [--regions regions.ply --front front.obj --render-dir DIR [--view AZ,EL] [--resolution WxH]]
+//              [--jacobians FILE]
+// --resolution: of the final pictures (default 1200x900); the f3d options ask for --supersample
+// times that (default 2), tube widths are in final pixels: scaling the render down smooths edges
+// thinner than a pixel, which f3d's FXAA alone leaves broken.
+// --view: the overall pictures' direction in degrees (azimuth about +Y from +Z, elevation); by
+// default the one of 36 that shows most of the regions.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -29,6 +35,9 @@ namespace {
 struct Options {
     std::string input, split, quads, quadsObj, regions, front, renderDir, jacobians;
     int width = 1200, height = 900;
+    int supersample = 2;  // scenes framed for a picture this many times larger, to be scaled down
+    bool fixedView = false;
+    double azimuth = 0, elevation = 0;
 };
 
 [[noreturn]] void Fail(const std::string &msg)
@@ -284,11 +293,16 @@ std::vector<Colour> RegionPalette(const RMesh &m, const std::vector<int> &region
     std::vector<int> order(regions), colour(regions, -1);
     for (int r = 0; r < regions; ++r) order[r] = r;
     std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return area[x] > area[y]; });
+    std::vector<double> total(11, 0);  // area per colour so far: spread the colours over the part
     for (int r : order) {
-        std::vector<int> used(11, 0);
-        for (int g : next[r])
-            if (colour[g] >= 0) used[colour[g]]++;
-        colour[r] = int(std::min_element(used.begin(), used.end()) - used.begin());  // first unused, else least used
+        int best = 0;
+        for (int c = 1; c < 11; ++c) {
+            auto clash = [&](int col) { int n = 0; for (int g : next[r]) n += colour[g] == col; return n; };
+            int a = clash(c), b = clash(best);
+            if (a < b || (a == b && total[c] < total[best])) best = c;
+        }
+        colour[r] = best;
+        total[best] += area[r];
     }
     std::vector<Colour> out;
     for (int r = 0; r < regions; ++r) out.push_back(Colour(set3[colour[r]][0], set3[colour[r]][1], set3[colour[r]][2], 255));
@@ -336,8 +350,10 @@ void RenderScenes(const Options &o, RMesh &quads)
     const int regionCount = int(index.size());
     const std::vector<Colour> palette = RegionPalette(regions, ids, regionCount);
 
-    const Camera overall = OverallCamera(regions, ids, regionCount, o.width, o.height);
-    const double px = overall.PixelSize();
+    const P3d viewDir = ViewDirection(o.azimuth, o.elevation);
+    const int W = o.width * o.supersample, H = o.height * o.supersample;
+    const Camera overall = OverallCamera(regions, ids, regionCount, W, H, o.fixedView ? &viewDir : nullptr);
+    const double px = overall.PixelSize() * o.supersample;  // one pixel of the final picture
     const double inEdge = MeanEdge(regions, false), quadEdge = MeanEdge(quads, true);
     const auto inNormals = CornerNormals(regions), quadNormals = CornerNormals(quads);
     auto regionEdge = [&](const RFace &f, int e) { return ids[vcg::tri::Index(regions, f.cFFp(e))] != ids[vcg::tri::Index(regions, &f)]; };
@@ -380,15 +396,15 @@ void RenderScenes(const Options &o, RMesh &quads)
     // 3. quads: edges dark, the front red, quads below 0.3 yellow, triangles orange
     {
         Scene s;
-        QuadScene(s, quads, quadNormals, faceJ, std::min(0.75 * px, 0.07 * quadEdge), std::min(1.6 * px, 0.2 * quadEdge), nullptr, 0);
+        QuadScene(s, quads, quadNormals, faceJ, std::min(0.6 * px, 0.07 * quadEdge), std::min(1.3 * px, 0.2 * quadEdge), nullptr, 0);
         SaveScene(s, overall, o.renderDir, "quads");
     }
     // 4. close-up: about a dozen rows of quads across the picture's height
     {
         P3d centre;
         const double radius = 6 * quadEdge;
-        Camera cam = CloseUpCamera(quads, radius, o.width, o.height, centre);
-        const double cpx = cam.PixelSize();
+        Camera cam = CloseUpCamera(quads, radius, W, H, centre);
+        const double cpx = cam.PixelSize() * o.supersample;
         Scene s;
         QuadScene(s, quads, quadNormals, faceJ, std::min(1.2 * cpx, 0.05 * quadEdge), std::min(2.8 * cpx, 0.12 * quadEdge), &centre,
                   3 * radius);
@@ -415,7 +431,13 @@ int main(int argc, char **argv)
         else if (a == "--front") o.front = next();
         else if (a == "--render-dir") o.renderDir = next();
         else if (a == "--jacobians") o.jacobians = next();
-        else if (a == "--resolution") {
+        else if (a == "--view") {
+            if (std::sscanf(next().c_str(), "%lf,%lf", &o.azimuth, &o.elevation) != 2) Fail("--view AZIMUTH,ELEVATION (degrees)");
+            o.fixedView = true;
+        } else if (a == "--supersample") {
+            o.supersample = std::atoi(next().c_str());
+            if (o.supersample < 1 || o.supersample > 4) Fail("--supersample 1..4");
+        } else if (a == "--resolution") {
             if (std::sscanf(next().c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 16 || o.height < 16)
                 Fail("--resolution WIDTHxHEIGHT");
         } else Fail("unknown argument " + a + " (see the comment at the top of qmf_report.cpp)");

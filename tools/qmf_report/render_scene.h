@@ -89,9 +89,17 @@ inline double ViewScore(const RMesh &m, const std::vector<int> &group, int group
     return score;
 }
 
+// Direction from the part to the camera: azimuth about +Y from +Z (f3d's default view), elevation.
+inline P3d ViewDirection(double azimuthDeg, double elevationDeg)
+{
+    double a = azimuthDeg * M_PI / 180, e = elevationDeg * M_PI / 180;
+    return P3d(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e));
+}
+
 // The overall view: +Y up (f3d's default), looking down at 15-45 degrees from the azimuth that
-// shows the regions best (`group`: region index 0..groups-1 per face, or empty).
-inline Camera OverallCamera(const RMesh &m, const std::vector<int> &group, int groups, int w, int h)
+// shows the regions best (`group`: region index 0..groups-1 per face, or empty); `fixed` (not
+// null) sets the direction instead.
+inline Camera OverallCamera(const RMesh &m, const std::vector<int> &group, int groups, int w, int h, const P3d *fixed = nullptr)
 {
     std::vector<P3d> pts;
     for (const RVertex &v : m.vert)
@@ -99,10 +107,10 @@ inline Camera OverallCamera(const RMesh &m, const std::vector<int> &group, int g
     const P3d up(0, 1, 0);
     double best = -1;
     P3d bestDir(0, 0, 1);
+    if (fixed) return FitCamera(pts, *fixed, up, w, h);
     for (int el = 15; el <= 45; el += 15)
         for (int az = 0; az < 360; az += 30) {
-            double a = az * M_PI / 180, e = el * M_PI / 180;
-            P3d d(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e));
+            P3d d = ViewDirection(az, el);
             double s = ViewScore(m, group, groups, pts, d, up, w, h);
             if (s > best * 1.02) { best = s; bestDir = d; }  // a clearly better view only: stable choice
         }
