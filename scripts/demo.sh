@@ -126,12 +126,12 @@ run_step 4 quads_polygonal.ply quads.obj -- -i split.ply -s "$RUN/step4.mlx" -o 
 
 # Pictures: f3d renders each scene (two at a time) at twice the size, then the picture is scaled
 # down (smooth edges thinner than a pixel) and brightened (f3d 1.3's lights leave a white surface
-# facing the camera at about 55% grey; no option changes that).
+# facing the camera at about 55% grey; no option changes that); 256 colours keep the files small.
 render() {
   local view="$1" args
   mapfile -t args < "$RUN/render/$view.args"
   f3d "$RUN/render/$view.ply" "${args[@]}" --output="$OUT/$view.png" > "$RUN/render/$view.log" 2>&1 &&
-    convert "$OUT/$view.png" -resize 50% -level 0%,62% -modulate 100,125 "$OUT/$view.png"
+    convert "$OUT/$view.png" -resize 50% -level 0%,62% -modulate 100,125 +dither -colors 256 "$OUT/$view.png"
 }
 PICTURES=(regions front quads closeup)
 pids=()
