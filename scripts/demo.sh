@@ -113,7 +113,16 @@ run_step() {  # run_step N OUTPUT_FILE... -- MESHLABSERVER_ARGS...
   progress "$n" 25 "$(summary "$n") (filter $(filter_seconds "$n") s, meshlabserver call $(( WALL_MS[$n] )) ms)"
 }
 
-run_step 1 regions.ply -- -i "$MESH" -s "$RUN/step1.mlx" -o regions.ply -m fq fc
+# Debian's meshlabserver 2020.09 aborts on any OBJ with faces (an assertion in its OBJ importer,
+# Debian bug #1054006): an OBJ input goes in as a PLY written by qmf_report.
+ML_INPUT="$MESH"
+if [ "$(echo "${MESH##*.}" | tr '[:upper:]' '[:lower:]')" = obj ]; then
+  ML_INPUT="$RUN/input.ply"
+  "$REPORT_TOOL" --convert "$MESH" "$ML_INPUT" || fail "cannot convert $MESH to PLY"
+  echo "demo: OBJ input converted to $ML_INPUT for meshlabserver"
+fi
+
+run_step 1 regions.ply -- -i "$ML_INPUT" -s "$RUN/step1.mlx" -o regions.ply -m fq fc
 run_step 2 front.obj -- -i regions.ply -s "$RUN/step2.mlx" -o front.obj -l 1
 run_step 3 split.ply -- -i regions.ply -s "$RUN/step3.mlx" -o split.ply -m ff fq fc
 run_step 4 quads_polygonal.ply quads.obj -- -i split.ply -s "$RUN/step4.mlx" -o quads_polygonal.ply -m ff fq fc

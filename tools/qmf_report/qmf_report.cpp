@@ -6,6 +6,8 @@
 //   qmf_report --input IN --split split.ply --quads quads_polygonal.ply [--quads-obj quads.obj]
 //              [--regions regions.ply --front front.obj --render-dir DIR [--view AZ,EL] [--resolution WxH]]
 //              [--jacobians FILE]
+//   qmf_report --convert IN OUT.ply     (the mesh as a binary PLY: Debian's meshlabserver 2020.09
+//                                        aborts on OBJ files with faces, Debian bug #1054006)
 // --resolution: of the final pictures (default 1200x900); the f3d options ask for --supersample
 // times that (default 2), tube widths are in final pixels: scaling the render down smooths edges
 // thinner than a pixel, which f3d's FXAA alone leaves broken.
@@ -122,7 +124,7 @@ std::string CheckObj(const std::string &path, const vcg_ext::QuadQualityReport &
 {
     if (path.empty()) return "not given";
     vcg_ext::PolygonMesh pm;
-    std::string err = LoadObjPolygons(pm, path);
+    std::string err = ReadObj(path, pm);
     if (!err.empty()) return err;
     vcg_ext::QuadQualityReport r = vcg_ext::QuadQuality::Measure(pm);
     std::string counts = Int(r.quads) + " quads, " + Int(r.triangles) + " triangles, " + Int(r.others) + " other";
@@ -416,6 +418,13 @@ void RenderScenes(const Options &o, RMesh &quads)
 
 int main(int argc, char **argv)
 {
+    if (argc == 4 && std::string(argv[1]) == "--convert") {  // any input mesh to a binary PLY meshlabserver can read
+        RMesh m;
+        LoadOrFail(m, argv[2]);
+        int err = vcg::tri::io::ExporterPLY<RMesh>::Save(m, argv[3], 0, true);
+        if (err) Fail(std::string("cannot write ") + argv[3] + ": " + vcg::tri::io::ExporterPLY<RMesh>::ErrorMsg(err));
+        return 0;
+    }
     Options o;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];

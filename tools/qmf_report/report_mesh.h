@@ -17,7 +17,6 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/topology.h>
-#include <wrap/io_trimesh/import_obj.h>
 #include <wrap/io_trimesh/import_off.h>
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
@@ -52,6 +51,82 @@ inline std::string Extension(const std::string &path)
     return Lower(path.substr(dot + 1));
 }
 
+// Reads an OBJ file as it is: v, f (polygons; "i/t/n" and negative indices accepted) and l lines
+// (polylines, as consecutive pairs). Not vcglib's OBJ importer: the one of this vcglib miscounts
+// polygons (a quad file read back lost 4 quads) and Debian's MeshLab 2020.09 asserts in it on any
+// OBJ with faces (Debian bug #1054006).
+inline std::string ReadObj(const std::string &path, vcg_ext::PolygonMesh &pm, std::vector<std::pair<int, int>> *edges = nullptr)
+{
+    FILE *in = std::fopen(path.c_str(), "r");
+    if (!in) return "cannot read " + path;
+    pm = vcg_ext::PolygonMesh();
+    if (edges) edges->clear();
+    std::string err;
+    char line[4096];
+    long lineNo = 0;
+    while (err.empty() && std::fgets(line, sizeof line, in)) {
+        ++lineNo;
+        const char kind = line[0];
+        if (kind == 'v' && (line[1] == ' ' || line[1] == '\t')) {
+            double x, y, z;
+            if (std::sscanf(line + 2, "%lf %lf %lf", &x, &y, &z) != 3) err = "bad vertex";
+            pm.points.push_back(P3d(x, y, z));
+        } else if ((kind == 'f' || kind == 'l') && (line[1] == ' ' || line[1] == '\t')) {
+            std::vector<int> ids;
+            char *s = line + 2;
+            while (*s) {
+                char *end;
+                long i = std::strtol(s, &end, 10);
+                if (end == s) break;
+                if (i < 0) i += long(pm.points.size()) + 1;
+                if (i < 1 || i > long(pm.points.size())) { err = "bad vertex index"; break; }
+                ids.push_back(int(i - 1));
+                s = end;
+                while (*s && *s != ' ' && *s != '\t') ++s;  // skip "/t/n"
+            }
+            if (!err.empty()) break;
+            if (kind == 'f') {
+                if (ids.size() < 3) err = "face with fewer than 3 vertices";
+                pm.faces.push_back(ids);
+            } else if (edges) {
+                for (size_t k = 0; k + 1 < ids.size(); ++k) edges->push_back({ids[k], ids[k + 1]});
+            }
+        }
+    }
+    std::fclose(in);
+    return err.empty() ? "" : path + ":" + std::to_string(lineNo) + ": " + err;
+}
+
+// An OBJ file as a triangle mesh: polygons fanned from their first vertex, the inner edges of a
+// fan flagged faux (MeshLab's polygonal form), polylines as edges.
+inline std::string LoadObj(RMesh &m, const std::string &path)
+{
+    vcg_ext::PolygonMesh pm;
+    std::vector<std::pair<int, int>> edges;
+    std::string err = ReadObj(path, pm, &edges);
+    if (!err.empty()) return err;
+    size_t tris = 0;
+    for (const auto &f : pm.faces) tris += f.size() - 2;
+    if (!pm.points.empty()) vcg::tri::Allocator<RMesh>::AddVertices(m, pm.points.size());
+    for (size_t i = 0; i < pm.points.size(); ++i) m.vert[i].P() = vcg::Point3f::Construct(pm.points[i]);
+    if (tris) vcg::tri::Allocator<RMesh>::AddFaces(m, tris);
+    size_t t = 0;
+    for (const auto &f : pm.faces)
+        for (size_t k = 1; k + 1 < f.size(); ++k, ++t) {
+            RFace &F = m.face[t];
+            F.V(0) = &m.vert[f[0]]; F.V(1) = &m.vert[f[k]]; F.V(2) = &m.vert[f[k + 1]];
+            F.Flags() = 0;
+            if (k > 1) F.SetF(0);                 // edge f[0]-f[k]: shared with the previous triangle
+            if (k + 2 < f.size()) F.SetF(2);      // edge f[k+1]-f[0]: shared with the next one
+        }
+    if (!edges.empty()) vcg::tri::Allocator<RMesh>::AddEdges(m, edges.size());
+    for (size_t i = 0; i < edges.size(); ++i) {
+        m.edge[i].V(0) = &m.vert[edges[i].first];
+        m.edge[i].V(1) = &m.vert[edges[i].second];
+    }
+    return "";
+}
+
 // Loads OFF, PLY, OBJ or STL (by extension) with vcglib's importers, keeping face flags, quality
 // and colour when the file has them (PLY). STL vertices are unified, as MeshLab does when it opens
 // an STL (its default "Unify Duplicated Vertices"), so the counts describe what the filters saw.
@@ -70,9 +145,7 @@ inline std::string Load(RMesh &m, const std::string &path)
         err = vcg::tri::io::ImporterOFF<RMesh>::Open(m, path.c_str(), mask);
         if (err != 0) msg = vcg::tri::io::ImporterOFF<RMesh>::ErrorMsg(err);
     } else if (ext == "obj") {
-        vcg::tri::io::ImporterOBJ<RMesh>::Info info;
-        err = vcg::tri::io::ImporterOBJ<RMesh>::Open(m, path.c_str(), info);
-        if (err != 0 && vcg::tri::io::ImporterOBJ<RMesh>::ErrorCritical(err)) msg = vcg::tri::io::ImporterOBJ<RMesh>::ErrorMsg(err);
+        msg = LoadObj(m, path);
     } else if (ext == "stl") {
         err = vcg::tri::io::ImporterSTL<RMesh>::Open(m, path.c_str(), mask);
         if (err != 0) msg = vcg::tri::io::ImporterSTL<RMesh>::ErrorMsg(err);
@@ -87,43 +160,6 @@ inline std::string Load(RMesh &m, const std::string &path)
     vcg::tri::UpdateBounding<RMesh>::Box(m);
     if (m.fn > 0) vcg::tri::UpdateNormal<RMesh>::PerFaceNormalized(m);
     return "";
-}
-
-// Reads the polygons of an OBJ file as they are (v and f lines; "i/t/n" and negative indices
-// accepted). vcglib's OBJ importer triangulates polygons, so it cannot tell what the file holds.
-inline std::string LoadObjPolygons(vcg_ext::PolygonMesh &pm, const std::string &path)
-{
-    FILE *in = std::fopen(path.c_str(), "r");
-    if (!in) return "cannot read " + path;
-    pm = vcg_ext::PolygonMesh();
-    std::string err;
-    char line[4096];
-    long lineNo = 0;
-    while (err.empty() && std::fgets(line, sizeof line, in)) {
-        ++lineNo;
-        if (line[0] == 'v' && line[1] == ' ') {
-            double x, y, z;
-            if (std::sscanf(line + 2, "%lf %lf %lf", &x, &y, &z) != 3) err = "bad vertex";
-            pm.points.push_back(P3d(x, y, z));
-        } else if (line[0] == 'f' && line[1] == ' ') {
-            std::vector<int> f;
-            char *s = line + 2;
-            while (*s) {
-                char *end;
-                long i = std::strtol(s, &end, 10);
-                if (end == s) break;
-                if (i < 0) i += long(pm.points.size()) + 1;
-                if (i < 1 || i > long(pm.points.size())) { err = "bad vertex index"; break; }
-                f.push_back(int(i - 1));
-                s = end;
-                while (*s && *s != ' ' && *s != '\t') ++s;  // skip "/t/n"
-            }
-            if (err.empty() && f.size() < 3) err = "face with fewer than 3 vertices";
-            pm.faces.push_back(f);
-        }
-    }
-    std::fclose(in);
-    return err.empty() ? "" : path + ":" + std::to_string(lineNo) + ": " + err;
 }
 
 inline P3d PosOf(const RVertex *v) { return P3d::Construct(v->cP()); }
