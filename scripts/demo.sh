@@ -153,7 +153,9 @@ for p in "${pids[@]}"; do wait "$p" || fail "rendering failed, see $RUN/render/"
 # Histogram of the scaled Jacobian (log scale: most quads are near 1, the tail is what matters).
 TITLE="$(printf '%s' "$NAME" | tr -c 'A-Za-z0-9 _.+-' '_')"
 QUADS="$(grep -c '^[-0-9]' "$OUT/scaled_jacobian.dat" || true)"
-( cd "$OUT" && gnuplot ) > "$RUN/gnuplot.log" 2>&1 <<EOF || fail "gnuplot failed, see $RUN/gnuplot.log"
+HISTOGRAM=""
+[ "$QUADS" -gt 0 ] && HISTOGRAM=scaled_jacobian.png   # no quads, no histogram
+[ -z "$HISTOGRAM" ] || ( cd "$OUT" && gnuplot ) > "$RUN/gnuplot.log" 2>&1 <<EOF || fail "gnuplot failed, see $RUN/gnuplot.log"
 set terminal pngcairo size 1000,560 font "DejaVu Sans,12"
 set output 'scaled_jacobian.png'
 stats 'scaled_jacobian.dat' using 1 nooutput
@@ -220,7 +222,7 @@ total_wall=$(( WALL_MS[1] + WALL_MS[2] + WALL_MS[3] + WALL_MS[4] ))
   echo
   echo "![close-up](closeup.png)"
   echo
-  echo "![scaled Jacobian histogram](scaled_jacobian.png)"
+  if [ -n "$HISTOGRAM" ]; then echo "![scaled Jacobian histogram](scaled_jacobian.png)"; else echo "No quads, so no scaled-Jacobian histogram."; fi
   echo
   echo "## Files"
   echo
@@ -236,4 +238,4 @@ total_wall=$(( WALL_MS[1] + WALL_MS[2] + WALL_MS[3] + WALL_MS[4] ))
 } > "$OUT/report.md"
 
 echo "demo: $OUT/report.md (pipeline: filters $total_filter s, meshlabserver calls $total_wall ms)"
-echo "demo: pictures $(for v in "${PICTURES[@]}" scaled_jacobian; do printf '%s.png ' "$v"; done)"
+echo "demo: pictures $(for v in "${PICTURES[@]}"; do printf '%s.png ' "$v"; done)$HISTOGRAM"
