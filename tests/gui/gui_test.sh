@@ -37,7 +37,7 @@ staged="$STAGE/lib/x86_64-linux-gnu/meshlab/plugins/$(basename "$PLUGIN")"
 [ "$(realpath "$staged")" = "$(realpath "$PLUGIN")" ] || fail "$staged is not the build's plugin $PLUGIN"
 [ -f "$MESH" ] || fail "no such mesh: $MESH"
 
-ML_PID="" XVFB_PID=""
+ML_PID="" XVFB_PID="" ML_STATUS=""
 cleanup() {
   if [ -n "$ML_PID" ] && kill -0 "$ML_PID" 2>/dev/null; then kill -9 "$ML_PID" 2>/dev/null || true; fi
   if [ -n "$XVFB_PID" ]; then kill "$XVFB_PID" 2>/dev/null || true; wait "$XVFB_PID" 2>/dev/null || true; fi
@@ -67,12 +67,15 @@ echo "registered: ${#FILTERS[@]} filters checked among $(wc -l < "$WORK/filter_n
 # 2. The GUI with a mesh: its main window ("MeshLab 2020.09 - [Project_1]") must appear.
 ( cd "$WORK" && exec "$STAGE/bin/meshlab" "$MESH" ) > "$WORK/meshlab.log" 2>&1 &
 ML_PID=$!
-exit_status() { local s=0; wait "$ML_PID" || s=$?; ML_PID=""; echo "$s"; }
+# Waits for meshlab and sets ML_STATUS. Never inside $(...): a subshell cannot wait for its
+# parent's child.
+reap() { ML_STATUS=0; wait "$ML_PID" || ML_STATUS=$?; ML_PID=""; }
 describe() { if [ "$1" -gt 128 ]; then echo "killed by signal $(( $1 - 128 )) ($(kill -l "$(( $1 - 128 ))"))"; else echo "status $1"; fi; }
 win=""
 while [ -z "$win" ]; do
   if ! kill -0 "$ML_PID" 2>/dev/null; then
-    fail "meshlab exited before its window appeared ($(describe "$(exit_status)")): $(tail -n 5 "$WORK/meshlab.log")"
+    reap
+    fail "meshlab exited before its window appeared ($(describe "$ML_STATUS")): $(tail -n 5 "$WORK/meshlab.log")"
   fi
   win="$(xdotool search --onlyvisible --name '^MeshLab ' 2>/dev/null | head -n1 || true)"
   [ -n "$win" ] || sleep 0.2
@@ -82,7 +85,10 @@ echo "window: $win '$(xdotool getwindowname "$win")'"
 # 3. It stays alive a few seconds (rendering the mesh), and it opened the mesh.
 sleep 3
 if [ "$INJECT" = crash ]; then kill -SEGV "$ML_PID"; sleep 0.5; fi
-kill -0 "$ML_PID" 2>/dev/null || fail "meshlab crashed after its window appeared ($(describe "$(exit_status)")): $(tail -n 5 "$WORK/meshlab.log")"
+if ! kill -0 "$ML_PID" 2>/dev/null; then
+  reap
+  fail "meshlab crashed after its window appeared ($(describe "$ML_STATUS")): $(tail -n 5 "$WORK/meshlab.log")"
+fi
 grep -q "Opened mesh" "$WORK/meshlab.log" || fail "meshlab did not report opening $MESH: $(tail -n 5 "$WORK/meshlab.log")"
 
 # 4. Screenshot, kept in the build tree; a blank screen has a handful of colours.
@@ -94,6 +100,6 @@ echo "screenshot: $WORK/meshlab_gui.png ($colours colours)"
 # 5. Quit with Ctrl+Q (File > Exit) and wait for a clean exit.
 xdotool windowfocus --sync "$win"
 xdotool key --clearmodifiers ctrl+q
-status="$(exit_status)"
-[ "$status" = 0 ] || fail "meshlab did not exit cleanly after Ctrl+Q ($(describe "$status")): $(tail -n 5 "$WORK/meshlab.log")"
+reap
+[ "$ML_STATUS" = 0 ] || fail "meshlab did not exit cleanly after Ctrl+Q ($(describe "$ML_STATUS")): $(tail -n 5 "$WORK/meshlab.log")"
 echo "GUI test passed: window shown, alive, mesh opened, exit status 0"
