@@ -55,21 +55,29 @@ export DISPLAY=":$(tr -d '[:space:]' < "$RUN/xvfb.fd")"
 
 # Per-step scripts: each shipped script runs the pipeline from the start, so take one filter block
 # out of it (its default parameters unchanged).
-filter_block() { sed -n "/<filter name=\"$1\">/,/<\/filter>/p" "$2"; }
+filter_block() {
+  local block; block="$(sed -n "/<filter name=\"$1\">/,/<\/filter>/p" "$2")"
+  [ -n "$block" ] || fail "no filter '$1' in $2"
+  printf '%s\n' "$block"
+}
 step_script() {  # step_script OUT.mlx BLOCK...
   local out="$1"; shift
   { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'; printf '%s\n' "$@"; echo '</FilterScript>'; } > "$out"
 }
-step_script "$RUN/step1.mlx" "$(filter_block "Segment by Variational Shape Approximation" "$SCRIPTS/vsa_segment.mlx")"
-step_script "$RUN/step2.mlx" "$(filter_block "Smooth Region Boundaries" "$SCRIPTS/smooth_boundaries.mlx")"
+# (assignments: a missing block stops the demo under set -e, an argument would not)
+VSA_BLOCK="$(filter_block "Segment by Variational Shape Approximation" "$SCRIPTS/vsa_segment.mlx")"
+SMOOTH_BLOCK="$(filter_block "Smooth Region Boundaries" "$SCRIPTS/smooth_boundaries.mlx")"
+SPLIT_BLOCK="$(filter_block "Split Triangles along Front" "$SCRIPTS/split_along_front.mlx")"
+# relative export path: meshlabserver runs in $OUT, so no path needs escaping for XML or sed
+QMORPH_BLOCK="$(filter_block "Q-Morph Quad Conversion" "$SCRIPTS/qmorph.mlx" |
+  sed 's|name="ExportPath" value=""|name="ExportPath" value="quads.obj"|')"
+step_script "$RUN/step1.mlx" "$VSA_BLOCK"
+step_script "$RUN/step2.mlx" "$SMOOTH_BLOCK"
 # Step 3 re-runs step 2 in memory (milliseconds) instead of reading front.obj back: MeshLab's OBJ
 # writer keeps 6 decimals, and the split along rounded curves can end in slightly different quads
 # than the whole-pipeline script gives. The step's figures are the Split filter's own.
-step_script "$RUN/step3.mlx" "$(filter_block "Smooth Region Boundaries" "$SCRIPTS/split_along_front.mlx")" \
-  "$(filter_block "Split Triangles along Front" "$SCRIPTS/split_along_front.mlx")"
-# relative export path: meshlabserver runs in $OUT, so no path needs escaping for XML or sed
-step_script "$RUN/step4.mlx" "$(filter_block "Q-Morph Quad Conversion" "$SCRIPTS/qmorph.mlx" |
-  sed 's|name="ExportPath" value=""|name="ExportPath" value="quads.obj"|')"
+step_script "$RUN/step3.mlx" "$SMOOTH_BLOCK" "$SPLIT_BLOCK"
+step_script "$RUN/step4.mlx" "$QMORPH_BLOCK"
 grep -q 'value="quads.obj"' "$RUN/step4.mlx" || fail "no ExportPath parameter in $SCRIPTS/qmorph.mlx"
 
 STEP_NAMES=("" "Segment by Variational Shape Approximation" "Smooth Region Boundaries"
