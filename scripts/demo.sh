@@ -136,19 +136,21 @@ run_step 3 split.ply -- -i regions.ply -s "$RUN/step3.mlx" -o split.ply -m ff fq
 run_step 4 quads_polygonal.ply quads.obj -- -i split.ply -s "$RUN/step4.mlx" -o quads_polygonal.ply -m ff fq fc
 
 # Quality tables, per-quad scaled Jacobians and the picture scenes, from the product's own code.
+PICTURE_SIZE=1200x900
 ( cd "$OUT" && "$REPORT_TOOL" --input "$MESH" --split split.ply --quads quads_polygonal.ply --quads-obj quads.obj \
-    --regions regions.ply --front front.obj --jacobians scaled_jacobian.dat --render-dir run/render --resolution 1200x900 --supersample 2 \
+    --regions regions.ply --front front.obj --jacobians scaled_jacobian.dat --render-dir run/render --resolution "$PICTURE_SIZE" --supersample 2 \
     ${QMF_VIEW:+--view "$QMF_VIEW"} ) \
   > "$RUN/quality.md" 2> "$RUN/qmf_report.log" || { cat "$RUN/qmf_report.log" >&2; fail "qmf_report failed"; }
 
-# Pictures: f3d renders each scene (two at a time) at twice the size, then the picture is scaled
-# down (smooth edges thinner than a pixel) and brightened (f3d 1.3's lights leave a white surface
-# facing the camera at about 55% grey; no option changes that); 256 colours keep the files small.
+# Pictures: f3d renders each scene (two at a time; the overall quads one at twice the size, scaled
+# down here: its edges are often thinner than a pixel), then the picture is brightened (f3d 1.3's
+# lights leave a white surface facing the camera at about 55% grey; no option changes that); 256
+# colours keep the files small, -strip drops the timestamps (the same picture, the same file).
 render() {
   local view="$1" args
   mapfile -t args < "$RUN/render/$view.args"
   f3d "$RUN/render/$view.ply" "${args[@]}" --output="$OUT/$view.png" > "$RUN/render/$view.log" 2>&1 &&
-    convert "$OUT/$view.png" -resize 50% -level 0%,62% -modulate 100,125 +dither -colors 256 "$OUT/$view.png"
+    convert "$OUT/$view.png" -resize "$PICTURE_SIZE>" -level 0%,62% -modulate 100,125 +dither -colors 256 -strip "$OUT/$view.png"
 }
 PICTURES=(regions front quads closeup)
 pids=()

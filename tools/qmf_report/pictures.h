@@ -218,7 +218,8 @@ inline void QuadScene(Scene &s, const RMesh &q, const std::vector<std::array<P3d
 struct PictureOptions {
     std::string regions, front, dir;  // step 1's and step 2's files, the folder for the scenes
     int width = 1200, height = 900;   // of the final pictures
-    int supersample = 2;              // scenes framed for a picture this many times larger, to be scaled down
+    int supersample = 2;              // the overall quads picture (dense edges, often thinner than a pixel)
+                                      // is framed this many times larger, to be scaled down
     bool fixedView = false;
     double azimuth = 0, elevation = 0;
 };
@@ -247,9 +248,11 @@ inline std::string RenderScenes(const PictureOptions &o, RMesh &quads)
     const std::vector<Colour> palette = RegionPalette(regions, ids, regionCount);
 
     const P3d viewDir = ViewDirection(o.azimuth, o.elevation);
-    const int W = o.width * o.supersample, H = o.height * o.supersample;
-    const Camera overall = OverallCamera(regions, ids, regionCount, W, H, o.fixedView ? &viewDir : nullptr);
-    const double px = overall.PixelSize() * o.supersample;  // one pixel of the final picture
+    const Camera overall = OverallCamera(regions, ids, regionCount, o.width, o.height, o.fixedView ? &viewDir : nullptr);
+    const double px = overall.PixelSize();  // one pixel of the final pictures
+    Camera overallLarge = overall;          // the same view, more pixels
+    overallLarge.width *= o.supersample;
+    overallLarge.height *= o.supersample;
     const double inEdge = MeanEdge(regions, false), quadEdge = MeanEdge(quads, true);
     const auto inNormals = CornerNormals(regions), quadNormals = CornerNormals(quads);
     auto regionEdge = [&](const RFace &f, int e) { return ids[vcg::tri::Index(regions, f.cFFp(e))] != ids[vcg::tri::Index(regions, &f)]; };
@@ -293,14 +296,14 @@ inline std::string RenderScenes(const PictureOptions &o, RMesh &quads)
     {
         Scene s;
         QuadScene(s, quads, quadNormals, faceJ, std::min(0.6 * px, 0.07 * quadEdge), std::min(1.3 * px, 0.2 * quadEdge), nullptr, 0);
-        if (!(err = SaveScene(s, overall, o.dir, "quads")).empty()) return err;
+        if (!(err = SaveScene(s, overallLarge, o.dir, "quads")).empty()) return err;
     }
     // 4. close-up: about a dozen rows of quads across the picture's height
     {
         P3d centre;
         const double radius = 6 * quadEdge;
-        Camera cam = CloseUpCamera(quads, radius, W, H, centre);
-        const double cpx = cam.PixelSize() * o.supersample;
+        Camera cam = CloseUpCamera(quads, radius, o.width, o.height, centre);
+        const double cpx = cam.PixelSize();
         Scene s;
         QuadScene(s, quads, quadNormals, faceJ, std::min(1.2 * cpx, 0.05 * quadEdge), std::min(2.8 * cpx, 0.12 * quadEdge), &centre,
                   3 * radius);

@@ -8,9 +8,9 @@
 //              [--jacobians FILE]
 //   qmf_report --convert IN OUT.ply     (the mesh as a binary PLY: Debian's meshlabserver 2020.09
 //                                        aborts on OBJ files with faces, Debian bug #1054006)
-// --resolution: of the final pictures (default 1200x900); the f3d options ask for --supersample
-// times that (default 2), tube widths are in final pixels: scaling the render down smooths edges
-// thinner than a pixel, which f3d's FXAA alone leaves broken.
+// --resolution: of the final pictures (default 1200x900); for the overall quads picture the f3d
+// options ask for --supersample times that (default 2): scaling it down smooths quad edges thinner
+// than a pixel, which f3d's FXAA alone leaves broken. Tube widths are in final pixels.
 // --view: the overall pictures' direction in degrees (azimuth about +Y from +Z, elevation); by
 // default the one of 36 that shows most of the regions.
 #include <cstdio>
@@ -36,7 +36,7 @@ namespace {
 struct Options {
     std::string input, split, quads, quadsObj, regions, front, renderDir, jacobians;
     int width = 1200, height = 900;
-    int supersample = 2;  // scenes framed for a picture this many times larger, to be scaled down
+    int supersample = 2;  // the overall quads picture is rendered this many times larger
     bool fixedView = false;
     double azimuth = 0, elevation = 0;
 };
