@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Set-up for a fresh Debian bookworm machine (idempotent; run as root or with sudo available).
-#  1. installs the Debian packages the build, the tests and the demo need;
+#  1. installs the Debian packages the build, the tests (GUI test too) and the demo need;
 #  2. enables source packages by deriving deb-src entries from apt's own entries;
 #  3. fetches MeshLab's source package, pinned to the installed binary, into .deps/meshlab-src
 #     (git-ignored: only its src/common headers and vcglib are used, nothing is committed);
@@ -14,7 +14,11 @@ if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 
 PACKAGES=(meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev cmake make g++
-          googletest libgtest-dev libbenchmark-dev xvfb xauth dpkg-dev xz-utils ca-certificates)
+          googletest libgtest-dev libbenchmark-dev xvfb xauth dpkg-dev xz-utils ca-certificates
+          # demo pictures (f3d renders, imagemagick scales them down, gnuplot draws the histogram)
+          f3d imagemagick gnuplot-nox
+          # GUI test: find and close the MeshLab window (xdotool), screenshot (xwd; convert to PNG)
+          xdotool x11-apps)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
