@@ -1,20 +1,26 @@
-// Checks of a quad-dominant result against its input, computed independently of the Q-Morph code:
-// selected edges as position pairs (front nodes never move, so positions match bit for bit),
-// Euler characteristic of the polygon mesh, enclosed volume, and a sampled two-sided Hausdorff
-// distance (vertices, edge midpoints and face centroids of one surface to the other).
+// Checks of a quad-dominant result against its input, computed independently of the Q-Morph code
+// (tests and benchmark): selected edges as position pairs (front nodes never move, so positions
+// match bit for bit) and as chains when the front was cut into pieces, Euler characteristics,
+// non-manifold edges, enclosed volume, and a sampled two-sided Hausdorff distance (vertices, edge
+// midpoints and face centroids of one surface to the other).
 #ifndef QMF_TESTS_QUAD_CHECKS_H
 #define QMF_TESTS_QUAD_CHECKS_H
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
 
 #include "test_mesh.h"
+#include <vcg_ext/common/edge_key.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace qmf_test {
@@ -26,39 +32,6 @@ inline PosEdge MakePosEdge(const P3 &a, const P3 &b)
     std::array<float, 3> x{a[0], a[1], a[2]}, y{b[0], b[1], b[2]};
     if (y < x) std::swap(x, y);
     return {x[0], x[1], x[2], y[0], y[1], y[2]};
-}
-
-inline std::set<PosEdge> SelectedEdges(const TMesh &m)
-{
-    std::set<PosEdge> s;
-    for (auto &f : m.face)
-        if (!f.IsD())
-            for (int k = 0; k < 3; ++k)
-                if (f.IsFaceEdgeS(k)) s.insert(MakePosEdge(f.cP(k), f.cP((k + 1) % 3)));
-    return s;
-}
-
-inline std::set<PosEdge> AllEdges(const TMesh &m)
-{
-    std::set<PosEdge> s;
-    for (auto &f : m.face)
-        if (!f.IsD())
-            for (int k = 0; k < 3; ++k) s.insert(MakePosEdge(f.cP(k), f.cP((k + 1) % 3)));
-    return s;
-}
-
-// V - E + F of the polygon mesh.
-inline int EulerCharacteristic(const vcg_ext::PolygonMesh &pm)
-{
-    std::set<std::pair<int, int>> edges;
-    std::set<int> verts;
-    for (auto &f : pm.faces)
-        for (size_t k = 0; k < f.size(); ++k) {
-            int a = f[k], b = f[(k + 1) % f.size()];
-            edges.insert({std::min(a, b), std::max(a, b)});
-            verts.insert(a);
-        }
-    return int(verts.size()) - int(edges.size()) + int(pm.faces.size());
 }
 
 // Signed volume enclosed by a closed oriented triangle mesh.
@@ -73,34 +46,167 @@ inline double Volume(const TMesh &m)
     return v;
 }
 
-// Largest distance from the sample points of `from` to the surface of `to`.
-inline double OneSidedDistance(TMesh &from, TMesh &to)
+// Largest distance from the samples of `from` (vertices, edge midpoints, face centroids) to the
+// surface of `to` (closest point on a triangle, vcg's static grid).
+inline double OneSidedDistance(const TMesh &from, TMesh &to)
 {
     typedef vcg::GridStaticPtr<TFace, float> Grid;
     vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(to);
     vcg::tri::UpdateBounding<TMesh>::Box(to);
     Grid grid;
     grid.Set(to.face.begin(), to.face.end());
-    std::vector<P3> samples;
-    for (auto &v : from.vert)
-        if (!v.IsD()) samples.push_back(v.P());
-    for (auto &f : from.face)
-        if (!f.IsD()) {
-            samples.push_back((f.P(0) + f.P(1) + f.P(2)) / 3.f);
-            for (int k = 0; k < 3; ++k) samples.push_back((f.P(k) + f.P((k + 1) % 3)) / 2.f);
-        }
-    double worst = 0;
     const float maxDist = to.bbox.Diag();
-    for (const P3 &s : samples) {
+    double worst = 0;
+    auto probe = [&](const P3 &s) {
         float dist = maxDist;
         P3 closest;
         vcg::tri::GetClosestFaceBase(to, grid, s, maxDist, dist, closest);
         worst = std::max(worst, double(dist));
-    }
+    };
+    for (const auto &v : from.vert)
+        if (!v.IsD()) probe(v.cP());
+    for (const auto &f : from.face)
+        if (!f.IsD()) {
+            probe((f.cP(0) + f.cP(1) + f.cP(2)) / 3.f);
+            for (int k = 0; k < 3; ++k) probe((f.cP(k) + f.cP((k + 1) % 3)) / 2.f);
+        }
     return worst;
 }
 
 inline double Hausdorff(TMesh &a, TMesh &b) { return std::max(OneSidedDistance(a, b), OneSidedDistance(b, a)); }
+
+// V - E + F of a triangle mesh (referenced vertices only).
+inline long EulerCharacteristic(const TMesh &m)
+{
+    std::vector<uint64_t> edges;
+    std::vector<char> used(m.vert.size(), 0);
+    long faces = 0;
+    for (const auto &f : m.face) {
+        if (f.IsD()) continue;
+        ++faces;
+        for (int k = 0; k < 3; ++k) {
+            int a = int(vcg::tri::Index(m, f.cV(k))), b = int(vcg::tri::Index(m, f.cV((k + 1) % 3)));
+            edges.push_back(vcg_ext::EdgeKey(a, b));
+            used[a] = 1;
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    long e = long(std::unique(edges.begin(), edges.end()) - edges.begin());
+    long v = long(std::count(used.begin(), used.end(), 1));
+    return v - e + faces;
+}
+
+// V - E + F of a polygon mesh (quads counted once: their diagonal is no edge).
+inline long EulerCharacteristic(const vcg_ext::PolygonMesh &pm)
+{
+    std::vector<uint64_t> edges;
+    std::vector<char> used(pm.points.size(), 0);
+    for (const auto &f : pm.faces)
+        for (size_t k = 0; k < f.size(); ++k) {
+            edges.push_back(vcg_ext::EdgeKey(f[k], f[(k + 1) % f.size()]));
+            used[f[k]] = 1;
+        }
+    std::sort(edges.begin(), edges.end());
+    long e = long(std::unique(edges.begin(), edges.end()) - edges.begin());
+    long v = long(std::count(used.begin(), used.end(), 1));
+    return v - e + long(pm.faces.size());
+}
+
+// Where the edges used by more than two faces are (up to `max`): "(x y z)-(x y z) n faces".
+inline std::vector<std::string> NonManifoldEdges(const TMesh &m, size_t max)
+{
+    std::vector<std::pair<uint64_t, int>> he;
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                he.push_back({vcg_ext::EdgeKey(int(vcg::tri::Index(m, f.cV(k))), int(vcg::tri::Index(m, f.cV((k + 1) % 3)))), 0});
+    std::sort(he.begin(), he.end());
+    std::vector<std::string> out;
+    for (size_t i = 0; i < he.size() && out.size() < max;) {
+        size_t j = i;
+        while (j < he.size() && he[j].first == he[i].first) ++j;
+        if (j - i > 2) {
+            const P3 &a = m.vert[he[i].first >> 32].cP(), &b = m.vert[he[i].first & 0xffffffffu].cP();
+            char buf[200];
+            std::snprintf(buf, sizeof buf, "(%g %g %g)-(%g %g %g) %d faces", a[0], a[1], a[2], b[0], b[1], b[2], int(j - i));
+            out.push_back(buf);
+        }
+        i = j;
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------- front as position pairs
+// Sorted, unique: the selected face-edges (selectedOnly) or all edges.
+inline std::vector<PosEdge> EdgesByPosition(const TMesh &m, bool selectedOnly)
+{
+    std::vector<PosEdge> s;
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                if (!selectedOnly || f.IsFaceEdgeS(k)) s.push_back(MakePosEdge(f.cP(k), f.cP((k + 1) % 3)));
+    std::sort(s.begin(), s.end());
+    s.erase(std::unique(s.begin(), s.end()), s.end());
+    return s;
+}
+
+inline std::set<PosEdge> SelectedEdges(const TMesh &m)
+{
+    const std::vector<PosEdge> e = EdgesByPosition(m, true);
+    return std::set<PosEdge>(e.begin(), e.end());
+}
+inline std::set<PosEdge> AllEdges(const TMesh &m)
+{
+    const std::vector<PosEdge> e = EdgesByPosition(m, false);
+    return std::set<PosEdge>(e.begin(), e.end());
+}
+
+// With re-meshing the front edges are cut into pieces: the selected output edges must lie on the
+// selected input edges and cover each exactly. Returns the input edges not covered exactly plus the
+// output edges lying on none (0: every front curve is a chain of selected output edges). A hash
+// grid over the input edges' midpoints keeps it linear.
+inline long FrontChainMismatches(const std::vector<PosEdge> &input, const std::vector<PosEdge> &output)
+{
+    typedef vcg::Point3d D3;
+    auto end = [](const PosEdge &e, int k) { return D3(e[3 * k], e[3 * k + 1], e[3 * k + 2]); };
+    double cell = 0;
+    for (const PosEdge &e : input) cell = std::max(cell, (end(e, 1) - end(e, 0)).Norm());
+    if (input.empty() || !(cell > 0)) return long(input.size() + output.size());
+    auto key = [&](const D3 &p) {
+        return std::array<long, 3>{long(std::floor(p[0] / cell)), long(std::floor(p[1] / cell)), long(std::floor(p[2] / cell))};
+    };
+    std::map<std::array<long, 3>, std::vector<int>> grid;
+    for (size_t i = 0; i < input.size(); ++i) grid[key((end(input[i], 0) + end(input[i], 1)) * 0.5)].push_back(int(i));
+    std::vector<double> covered(input.size(), 0);
+    long stray = 0;
+    for (const PosEdge &o : output) {
+        const D3 a = end(o, 0), b = end(o, 1), mid = (a + b) * 0.5;
+        const std::array<long, 3> c = key(mid);
+        int found = -1;
+        for (long dx = -1; dx <= 1 && found < 0; ++dx)
+            for (long dy = -1; dy <= 1 && found < 0; ++dy)
+                for (long dz = -1; dz <= 1 && found < 0; ++dz) {
+                    auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it == grid.end()) continue;
+                    for (int i : it->second) {
+                        const D3 p = end(input[i], 0), d = end(input[i], 1) - p;
+                        auto on = [&](const D3 &q) {
+                            const double t = ((q - p) * d) / d.SquaredNorm();
+                            return t > -1e-6 && t < 1 + 1e-6 && (p + d * t - q).Norm() < 1e-5 * d.Norm();
+                        };
+                        if (on(a) && on(b)) { found = i; break; }
+                    }
+                }
+        if (found < 0) ++stray;
+        else covered[found] += (b - a).Norm();
+    }
+    long uncovered = 0;
+    for (size_t i = 0; i < input.size(); ++i) {
+        const double len = (end(input[i], 1) - end(input[i], 0)).Norm();
+        uncovered += std::fabs(covered[i] - len) > 1e-4 * len;
+    }
+    return uncovered + stray;
+}
 
 // Selects (both sides) the edges whose two faces' normals differ by more than `deg` degrees.
 inline int SelectCreases(TMesh &m, double deg)
