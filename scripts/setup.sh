@@ -13,8 +13,11 @@ SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 
+# MeshLab itself and what the plugin builds against (Qt, OpenGL/GLEW, Eigen for vcglib), the build
+# tools, GoogleTest, Xvfb for meshlabserver (xauth for xvfb-run), dpkg-dev and xz-utils for
+# `apt-get source`, ca-certificates for apt's https sources.
 PACKAGES=(meshlab qtbase5-dev libqt5opengl5-dev libglew-dev libeigen3-dev cmake make g++
-          googletest libgtest-dev libbenchmark-dev xvfb xauth dpkg-dev xz-utils ca-certificates
+          libgtest-dev xvfb xauth dpkg-dev xz-utils ca-certificates
           # demo pictures (f3d renders, imagemagick scales them down, gnuplot draws the histogram)
           f3d imagemagick gnuplot-nox
           # GUI test: find and close the MeshLab window (xdotool), screenshot (xwd; convert to PNG)
