@@ -57,7 +57,7 @@ Topology MeasureTopology(const RMesh &m)
 {
     Topology t;
     t.checks = vcg_ext::MeshChecks<RMesh>::Inspect(m);
-    t.euler = EulerCharacteristic(m);
+    t.euler = t.checks.EulerCharacteristic();
     return t;
 }
 

@@ -21,6 +21,7 @@
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
+#include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace qmf_report {
@@ -182,41 +183,11 @@ inline double SmallestAngleDeg(const RFace &f)
 {
     double best = 180;
     for (int k = 0; k < 3; ++k) {
-        P3d a = PosOf(f.cV((k + 1) % 3)) - PosOf(f.cV(k)), b = PosOf(f.cV((k + 2) % 3)) - PosOf(f.cV(k));
-        double la = a.Norm(), lb = b.Norm();
-        if (!(la > 0 && lb > 0)) return 0;
-        double c = std::max(-1.0, std::min(1.0, (a * b) / (la * lb)));
-        best = std::min(best, std::acos(c) * 180.0 / M_PI);
+        const P3d a = PosOf(f.cV((k + 1) % 3)) - PosOf(f.cV(k)), b = PosOf(f.cV((k + 2) % 3)) - PosOf(f.cV(k));
+        if (!(a.Norm() > 0 && b.Norm() > 0)) return 0;
+        best = std::min(best, vcg_ext::AngleBetween(a, b) * 180.0 / M_PI);
     }
     return best;
-}
-
-inline uint64_t PairKey(int a, int b)
-{
-    if (a > b) std::swap(a, b);
-    return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
-}
-
-// V - E + F over the referenced vertices of a triangle mesh. For the faux-edge form of a quad mesh
-// it equals the polygon mesh's (each diagonal adds one edge and one face).
-inline long EulerCharacteristic(const RMesh &m)
-{
-    std::vector<uint64_t> edges;
-    std::vector<char> used(m.vert.size(), 0);
-    long faces = 0;
-    for (const RFace &f : m.face) {
-        if (f.IsD()) continue;
-        ++faces;
-        for (int k = 0; k < 3; ++k) {
-            int a = int(vcg::tri::Index(m, f.cV(k))), b = int(vcg::tri::Index(m, f.cV((k + 1) % 3)));
-            edges.push_back(PairKey(a, b));
-            used[a] = 1;
-        }
-    }
-    std::sort(edges.begin(), edges.end());
-    long e = long(std::unique(edges.begin(), edges.end()) - edges.begin());
-    long v = long(std::count(used.begin(), used.end(), 1));
-    return v - e + faces;
 }
 
 // Linear-interpolated percentile (q in [0,1]) of a sorted list.

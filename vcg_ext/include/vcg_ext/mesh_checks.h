@@ -28,6 +28,10 @@ struct MeshCheckReport {
     int inconsistentEdges = 0;    // manifold edges whose two faces traverse it the same way
     int nonManifoldVertices = 0;  // vertices whose faces form more than one fan
     int components = 0;           // edge-connected face components
+    int edges = 0;                // distinct edges (vertex pairs) of the live faces
+    int referencedVertices = 0;   // live vertices used by a live face
+    // V - E + F over the referenced vertices (2 - 2 genus for a closed connected surface).
+    int EulerCharacteristic() const { return referencedVertices - edges + faces; }
 
     bool IsClosed() const { return boundaryEdges == 0; }
     bool IsTwoManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
@@ -91,6 +95,7 @@ public:
             return 3 * f;
         };
         const EdgePairing::Groups edges = EdgePairing::Group(tris);
+        r.edges = edges.Count();
         for (int e = 0; e < edges.Count(); ++e) {
             const int n = edges.Size(e), *h = edges.Begin(e);
             if (n == 1) ++r.boundaryEdges;
@@ -114,10 +119,18 @@ public:
                 int v = tris[f][k];
                 if (k > 0 && (v == tris[f][0] || (k == 2 && v == tris[f][1]))) continue;
                 int root = cornerSet.Find(int(3 * f + k));
-                if (fanOf[v] < 0) fanOf[v] = root;
+                if (fanOf[v] < 0) { fanOf[v] = root; ++r.referencedVertices; }
                 else if (fanOf[v] != root && !bad[v]) { bad[v] = 1; ++r.nonManifoldVertices; }
             }
         return r;
+    }
+
+    // The mesh has faces and no NaN or infinite coordinate, or the first of these problems: what
+    // every filter needs (cheap, no topology).
+    static std::string CheckFacesAndCoordinates(const MeshType &m)
+    {
+        const MeshCheckReport report = Inspect(m, false);
+        return report.faces == 0 || report.nonFiniteVertices ? report.FirstProblem(false) : "";
     }
 
     // Live vertices with a NaN or infinite coordinate.

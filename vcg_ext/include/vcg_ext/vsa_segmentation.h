@@ -83,11 +83,8 @@ public:
     // are fine, and so are degenerate faces (they get a region without NaNs).
     static std::string Check(const MeshType &m, const Params &p)
     {
-        std::string why = p.Validate();
-        if (!why.empty()) return why;
-        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m, false);
-        if (report.faces == 0 || report.nonFiniteVertices) return report.FirstProblem(false);
-        return "";
+        const std::string why = p.Validate();
+        return why.empty() ? MeshChecks<MeshType>::CheckFacesAndCoordinates(m) : why;
     }
 
     // Segments `m` (after Check: on error it is left as it is); on success writes region ids to

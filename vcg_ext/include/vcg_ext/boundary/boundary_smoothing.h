@@ -74,11 +74,8 @@ public:
     // Smooth: integral labels come from RegionIds).
     static std::string Check(const MeshType &m, const Params &p)
     {
-        std::string why = p.Validate();
-        if (!why.empty()) return why;
-        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m, false);
-        if (report.faces == 0 || report.nonFiniteVertices) return report.FirstProblem(false);
-        return "";
+        const std::string why = p.Validate();
+        return why.empty() ? MeshChecks<MeshType>::CheckFacesAndCoordinates(m) : why;
     }
 
     // faceRegion: region id per face index (deleted faces ignored). The mesh is not modified.
