@@ -366,7 +366,7 @@ public:
 
     // ---- edge flip ----------------------------------------------------------------------------
     // Flip of the edge of h between two triangles (a b c) and (b a d) into (c a d) and (d b c).
-    // `n` is the local normal used for the convexity test. Refuses constrained edges.
+    // The convexity test uses the two triangles' summed normal. Refuses constrained edges.
     bool CanFlip(int h) const
     {
         int t = heTwin[h];
