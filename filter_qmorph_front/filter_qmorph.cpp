@@ -48,10 +48,11 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList
                            "(they are not selected), so no quad folds over a sharp crease inside a patch (a VSA region "
                            "may hold creases up to twice its threshold angle). 180 turns it off. In (0, 180]."));
     par.addParam(RichAbsPerc("TargetEdgeLength", float(d.targetEdgeLength), 0.f, diag, "Re-mesh first: target edge length",
-                             "Optional, beyond the paper: isotropic re-meshing of each patch before Q-Morph (split, "
-                             "collapse, flip, tangential relaxation on the input surface), so the quads start from "
-                             "well-shaped triangles of this size. Front edges are cut into pieces of about this length "
-                             "and stay chains of selected edges. 0: off (the input triangles are used as they are)."));
+                             "Optional, beyond the paper: isotropic re-meshing of the mesh before Q-Morph (vcglib's "
+                             "split, collapse, flip and tangential relaxation on the input surface), so the quads start "
+                             "from well-shaped triangles of this size (absolute units, or % of the bounding-box "
+                             "diagonal). Front edges and sharp creases stay where they are, as chains of edges (long "
+                             "ones are cut at their midpoints). 0: off (the input triangles are used as they are)."));
     par.addParam(RichInt("RemeshIterations", d.remeshIterations, "Re-meshing iterations",
                          "Rounds of split, collapse, flip and relaxation when re-meshing is on (1..50)."));
     par.addParam(RichBool("FrontEdgesLayer", true, "Front edges layer",
@@ -84,13 +85,17 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
 
     // The core checks the mesh and the parameters first and leaves the mesh as it is on error; it
     // needs face-face adjacency, enabled here and dropped again on error.
-    const bool hadFaceFace = mm.hasDataMask(MeshModel::MM_FACEFACETOPO);
-    mm.updateDataMask(MeshModel::MM_FACEFACETOPO);
+    // (re-meshing: vertex-face adjacency and marks too).
+    const int remeshing = MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK | MeshModel::MM_FACEMARK;
+    const int needed = MeshModel::MM_FACEFACETOPO | (p.targetEdgeLength > 0 ? remeshing : 0);
+    const int missing = needed & ~mm.dataMask();
+    mm.updateDataMask(needed);
     QMorphCMeshO::Result r = QMorphCMeshO::Apply(mm.cm, p, cb);
     if (!r.error.empty()) {
-        if (!hadFaceFace) mm.clearDataMask(MeshModel::MM_FACEFACETOPO);
+        mm.clearDataMask(missing);
         return fail(name, QString::fromStdString(r.error));
     }
+    mm.clearDataMask(missing & remeshing);  // the adjacency is stale after the rewrite
     mm.updateDataMask(MeshModel::MM_POLYGONAL);
     if (mm.hasDataMask(MeshModel::MM_FACEQUALITY) && mm.hasDataMask(MeshModel::MM_FACECOLOR)) {
         std::vector<int> ids;

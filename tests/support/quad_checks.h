@@ -73,6 +73,52 @@ inline double OneSidedDistance(const TMesh &from, TMesh &to)
     return worst;
 }
 
+// Faces of a polygon mesh flipped against the input surface: their vector area (Newell) points
+// away from the normal of the input triangle closest to their corner centroid (vcg's static grid;
+// the measure of evalquad, independent of the core's surface walk). As evalquad documents, at a
+// crease sharper than 90 degrees the closest input triangle can lie on the other side: a face whose
+// closest triangle is next to such a crease is counted apart (`ambiguous`), not as flipped.
+// Folded quads too: their two triangles meet at more than 60 degrees whichever diagonal splits them.
+struct FlipCount {
+    int flipped = 0, folded = 0, ambiguous = 0;
+};
+inline FlipCount FlippedFaces(const vcg_ext::PolygonMesh &pm, TMesh &input)
+{
+    typedef vcg::GridStaticPtr<TFace, float> Grid;
+    typedef vcg::Point3d D3;
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(input);
+    auto besideSharpCrease = [](const TFace &f) {
+        for (int k = 0; k < 3; ++k)
+            if (f.cFFp(k) != &f && f.cN() * f.cFFp(k)->cN() < 0) return true;
+        return false;
+    };
+    Grid grid;
+    grid.Set(input.face.begin(), input.face.end());
+    FlipCount c;
+    for (const auto &f : pm.faces) {
+        D3 centroid(0, 0, 0), area(0, 0, 0);
+        for (int v : f) centroid += pm.points[v];
+        centroid /= double(f.size());
+        for (size_t k = 1; k + 1 < f.size(); ++k)
+            area += (pm.points[f[k]] - pm.points[f[0]]) ^ (pm.points[f[k + 1]] - pm.points[f[0]]);
+        float dist = input.bbox.Diag();
+        P3 closest;
+        const TFace *near = vcg::tri::GetClosestFaceBase(input, grid, P3::Construct(centroid), input.bbox.Diag(), dist, closest);
+        if (near && area * D3::Construct(near->cN()) < 0) ++(besideSharpCrease(*near) ? c.ambiguous : c.flipped);
+        if (f.size() == 4) {
+            auto bent = [&](int i) {
+                const D3 &a = pm.points[f[i]], &b = pm.points[f[(i + 1) % 4]], &d = pm.points[f[(i + 2) % 4]], &e = pm.points[f[(i + 3) % 4]];
+                const D3 n1 = (b - a) ^ (d - a), n2 = (d - a) ^ (e - a);
+                return n1.Norm() > 0 && n2.Norm() > 0 && n1 * n2 < std::cos(M_PI / 3) * n1.Norm() * n2.Norm();
+            };
+            c.folded += bent(0) && bent(1);
+        }
+    }
+    return c;
+}
+
 inline double Hausdorff(TMesh &a, TMesh &b) { return std::max(OneSidedDistance(a, b), OneSidedDistance(b, a)); }
 
 // V - E + F of a triangle mesh (referenced vertices only).

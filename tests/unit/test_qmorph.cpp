@@ -65,7 +65,8 @@ void ExpectFrontIsChainsOfSelectedEdges(const std::set<PosEdge> &input, const TM
     EXPECT_EQ(uncovered, 0) << "initial front edges not exactly covered by a chain of selected output edges";
 }
 
-// Runs Q-Morph on `m` and checks what must hold for any input: no error, no inverted quad, a
+// Runs Q-Morph on `m` and checks what must hold for any input: no error, no inverted quad, no face
+// flipped against the input surface (independent check) and no folded quad, a
 // clean 2-manifold (closed when the input was), the front unchanged and still the only
 // selection, the Euler characteristic kept. Returns the result for case-specific checks.
 QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
@@ -81,6 +82,8 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
             if (u.second == 1) front.insert(u.first);
     }
     const int euler = Euler(m);
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
     QM::Result r = QM::Apply(m, p);
     EXPECT_EQ(r.error, "");
     if (!r.error.empty()) return r;
@@ -108,6 +111,10 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
     vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
     vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
     EXPECT_EQ(EulerCharacteristic(pm), euler) << "the polygon mesh changed topology";
+    const FlipCount flips = FlippedFaces(pm, input);
+    EXPECT_EQ(flips.flipped, 0) << "faces upside down on the input surface";
+    EXPECT_EQ(flips.folded, 0) << "quads folded across both diagonals";
+    EXPECT_EQ(r.quality.flippedFaces, 0) << "the core's own count";
     EXPECT_EQ(r.quads + r.triangles, int(pm.faces.size()));
     return r;
 }
@@ -348,7 +355,8 @@ TEST(QMorph, CubeRemeshedToATargetLengthKeepsItsEdgesAsChains)
     QM::Params p;
     p.targetEdgeLength = 1.0 / 6;  // every mesh edge of a cube edge becomes 4 pieces
     QM::Result r = RunAndCheckInvariants(m, p);
-    EXPECT_EQ(r.frontEdgesSubdivided, 12 * 3);
+    EXPECT_EQ(r.remesh.frontEdgesBefore, 12 * 3);
+    EXPECT_EQ(r.remesh.frontEdgesAfter, 12 * 12) << "every front edge cut in 4: a cube edge of length 2 in 12 pieces";
     EXPECT_GT(r.remesh.splits, 6 * 18) << "the 18 triangles of a side become ~300";
     EXPECT_EQ(r.triangles, 0) << Describe(r);
     EXPECT_NEAR(r.quads, 6 * 144, 6 * 144 * 0.2) << "about (2 / L)^2 quads per side";
@@ -364,7 +372,7 @@ TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
     QM::Params p;
     p.targetEdgeLength = 0.01 * input.bbox.Diag();
     QM::Result r = RunAndCheckInvariants(m, p);
-    EXPECT_GT(r.frontEdgesSubdivided, 0);
+    EXPECT_GT(r.remesh.frontEdgesAfter, r.remesh.frontEdgesBefore / 2);
     EXPECT_GT(r.quality.quadAreaFraction, 0.98) << Describe(r);
     EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
     EXPECT_NEAR(MeanSideLength(m), p.targetEdgeLength, 0.25 * p.targetEdgeLength);

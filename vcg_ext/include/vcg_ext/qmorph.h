@@ -30,11 +30,10 @@
 
 #include <vcg_ext/common/format.h>
 #include <vcg_ext/mesh_checks.h>
-#include <vcg_ext/qmorph/front_subdivision.h>
+#include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/qmorph/partition.h>
 #include <vcg_ext/qmorph/patch_mesher.h>
 #include <vcg_ext/qmorph/quad_output.h>
-#include <vcg_ext/qmorph/remesh.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
@@ -60,7 +59,7 @@ public:
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
         double creaseAngleDeg = 60;        // edges this sharp (angle between face normals) are front
                                            // too, so no quad folds over a crease; >= 180: off
-        double targetEdgeLength = 0;       // > 0: isotropic re-meshing of each patch first (absolute units)
+        double targetEdgeLength = 0;       // > 0: isotropic re-meshing of the whole mesh first (absolute units)
         int remeshIterations = 5;          // split/collapse/flip/relax rounds of that re-meshing
 
         std::string Validate() const
@@ -79,8 +78,7 @@ public:
         int initialFrontEdges = 0, patches = 0, patchesWithoutFront = 0;
         int creaseEdges = 0;  // sharp edges that were not selected but cut the patches too
         double targetEdgeLength = 0;   // re-meshing length used (0: none)
-        int frontEdgesSubdivided = 0;  // front edges cut into pieces of the target length (re-meshing on)
-        qmorph::PatchRemesher::Stats remesh;
+        typename qmorph::FeatureRemesh<MeshType>::Stats remesh;
         int quads = 0, triangles = 0;
         qmorph::PatchStats ops;
         QuadQualityReport quality;
@@ -101,16 +99,19 @@ public:
         std::string RemeshSummary() const
         {
             if (!(targetEdgeLength > 0)) return "";
-            return Format("Q-Morph re-meshing to edge length %g: %d front edges cut into pieces; %d splits, %d collapses, %d flips",
-                          targetEdgeLength, frontEdgesSubdivided, remesh.splits, remesh.collapses, remesh.flips);
+            return Format("Q-Morph re-meshing to edge length %g: %d front edges became %d (%d feature edges before), %d -> %d "
+                          "triangles; %d splits, %d collapses, %d flips",
+                          targetEdgeLength, remesh.frontEdgesBefore, remesh.frontEdgesAfter, remesh.featureEdges,
+                          remesh.facesBefore, remesh.facesAfter, remesh.splits, remesh.collapses, remesh.flips);
         }
         std::string QualitySummary() const
         {
             const QuadQualityReport &q = quality;
-            return Format("Q-Morph quality: scaled Jacobian min %.3f mean %.3f, %d quads below 0.3, %d inverted; irregular "
+            return Format("Q-Morph quality: scaled Jacobian min %.3f mean %.3f p5 %.3f (against the input surface's "
+                          "normal), %d quads below 0.3, %d inverted; flipped faces: %d, folded quads: %d; irregular "
                           "vertices %d of %d (%.1f%%)",
-                          q.minJacobian, q.meanJacobian, q.quadsBelow03, q.invertedQuads, q.irregularVertices,
-                          q.interiorAllQuadVertices, 100 * q.IrregularFraction());
+                          q.minJacobian, q.meanJacobian, q.p5Jacobian, q.quadsBelow03, q.invertedQuads, q.flippedFaces,
+                          q.foldedQuads, q.irregularVertices, q.interiorAllQuadVertices, 100 * q.IrregularFraction());
         }
     };
 
@@ -185,15 +186,15 @@ private:
     // then everything written back at once.
     static void Run(MeshType &m, const Params &par, vcg::CallBackPos *cb, Result &res)
     {
+        res.targetEdgeLength = par.targetEdgeLength;
+        if (par.targetEdgeLength > 0)
+            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, par.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
         qmorph::FrontPartition part;
         part.Build(m, par.creaseAngleDeg);
         res.initialFrontEdges = part.frontEdges;
         res.creaseEdges = part.creaseEdges;
-        res.targetEdgeLength = par.targetEdgeLength;
         const qmorph::PatchParams pp = PatchParamsOf(par);
         qmorph::QuadOutput out(m.vert.size());
-        qmorph::FrontSubdivision subdivision(part, out, par.targetEdgeLength);
-        const bool remesh = par.targetEdgeLength > 0;
         part.ForEachPatch([&](size_t begin, size_t end) {
             Progress(cb, int(100.0 * begin / std::max<size_t>(1, part.order.size())), "Q-Morph: meshing patches");
             ++res.patches;
@@ -204,21 +205,17 @@ private:
             mm.SetKeys(in.globalOf);
             SurfaceProjector surface;
             surface.Build(in.points, in.tris);
-            std::unordered_map<int, int> sharedOfLocal;  // front subdivision node -> its shared point
-            if (in.hasFront && remesh) subdivision.Subdivide(m, in, mm, in.home, sharedOfLocal);
             if (in.hasFront) {
-                TellOtherPatches(part, subdivision, part.patchOf[part.order[begin]], in, sharedOfLocal, mm);
-                if (remesh) res.remesh += qmorph::PatchRemesher(mm, surface, in.home, par.targetEdgeLength).Run(par.remeshIterations);
+                TellOtherPatches(part, part.patchOf[part.order[begin]], in, mm);
                 res.ops += qmorph::PatchMesher(mm, surface, in.home, pp).Run();
             }
-            out.AddPatch(mm, surface, in.home, in, sharedOfLocal);
+            out.AddPatch(mm, surface, in.home, in);
         });
-        res.frontEdgesSubdivided = subdivision.edgesSubdivided;
         res.quads = out.quads;
         res.triangles = out.triangles;
         Progress(cb, 99, "Q-Morph: writing the quad mesh");
         out.WriteTo(m, part);
-        res.quality = QuadQuality::Measure(QuadQuality::FromFauxMesh(m));
+        res.quality = QuadQuality::Measure(QuadQuality::FromFauxMesh(m), out.referenceNormals);
     }
 
     // The per-patch parameters (angles in radians) from the filter's.
@@ -237,16 +234,13 @@ private:
 
     // Which other patches hold each front node: a chord between two front nodes that another patch
     // also holds could be made there too (see MixedMesh::NewChordBetweenFrontNodes).
-    static void TellOtherPatches(const qmorph::FrontPartition &part, const qmorph::FrontSubdivision &subdivision, int patch,
-                                 const qmorph::PatchInput &in, const std::unordered_map<int, int> &sharedOfLocal,
-                                 qmorph::MixedMesh &mm)
+    static void TellOtherPatches(const qmorph::FrontPartition &part, int patch, const qmorph::PatchInput &in, qmorph::MixedMesh &mm)
     {
         mm.otherPatches.assign(mm.VertexCount(), {});
         for (int v = 0; v < mm.VertexCount(); ++v) {
             if (!mm.vertFixed[v]) continue;
-            auto shared = sharedOfLocal.find(v);
             std::vector<int> &ps = mm.otherPatches[v];
-            ps = shared != sharedOfLocal.end() ? subdivision.sharedPatches[shared->second] : part.patchesOfVertex[in.globalOf[v]];
+            ps = part.patchesOfVertex[in.globalOf[v]];
             ps.erase(std::remove(ps.begin(), ps.end(), patch), ps.end());
         }
     }

@@ -6,11 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <vector>
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/edge_key.h>
 #include <vcg_ext/common/polygon_geometry.h>
 
 namespace vcg_ext {
@@ -20,12 +21,16 @@ struct PolygonMesh {
     std::vector<std::vector<int>> faces;  // counter-clockwise, 3 or 4 nodes
 };
 
+// Scaled Jacobians are measured against the input surface's normal under each face when it is
+// known (a quad upside down on the surface is then negative), else against the quad's own.
 struct QuadQualityReport {
     int quads = 0, triangles = 0, others = 0;
     double quadAreaFraction = 0, quadCountFraction = 0;
-    double minJacobian = 1, meanJacobian = 0;
+    double minJacobian = 1, meanJacobian = 0, p5Jacobian = 0;  // p5: 5th percentile (nearest rank)
     int quadsBelow03 = 0;       // scaled Jacobian < 0.3
     int invertedQuads = 0;      // scaled Jacobian <= 0
+    int flippedFaces = 0;       // faces whose vector area points away from the input surface
+    int foldedQuads = 0;        // quads folded across both diagonals (kFoldAngleDeg)
     int interiorAllQuadVertices = 0, irregularVertices = 0;  // see IrregularFraction
     double IrregularFraction() const { return interiorAllQuadVertices ? double(irregularVertices) / interiorAllQuadVertices : 0; }
 };
@@ -50,37 +55,53 @@ public:
     }
 
     // Irregular vertex: not on the mesh boundary, all its faces quads, valence != 4.
-    static QuadQualityReport Measure(const PolygonMesh &pm)
+    // referenceNormal: per face, the input surface's unit normal under it (empty: unknown).
+    static QuadQualityReport Measure(const PolygonMesh &pm, const std::vector<P3> &referenceNormal = std::vector<P3>())
     {
         QuadQualityReport r;
+        const bool referenced = referenceNormal.size() == pm.faces.size();
         double quadArea = 0, total = 0, jsum = 0;
-        std::vector<int> valence(pm.points.size(), 0), faceCount(pm.points.size(), 0);
+        std::vector<double> jacobians;
+        std::vector<int> faceCount(pm.points.size(), 0);
         std::vector<char> touchesTriangle(pm.points.size(), 0), onBoundary(pm.points.size(), 0);
-        std::map<std::pair<int, int>, int> edgeUse;
-        for (const auto &f : pm.faces) {
-            double a = Area(pm, f);
+        std::vector<uint64_t> edges;
+        std::vector<P3> p;
+        for (size_t i = 0; i < pm.faces.size(); ++i) {
+            const std::vector<int> &f = pm.faces[i];
+            p.resize(f.size());
+            for (size_t k = 0; k < f.size(); ++k) p[k] = pm.points[f[k]];
+            const P3 vectorArea = VectorArea(p.data(), int(p.size()));
+            const double a = vectorArea.Norm();
             total += a;
+            if (referenced && vectorArea * referenceNormal[i] < 0) ++r.flippedFaces;
             if (f.size() == 4) {
                 ++r.quads;
                 quadArea += a;
-                double j = ScaledJacobian(pm.points[f[0]], pm.points[f[1]], pm.points[f[2]], pm.points[f[3]]);
+                const double j = referenced ? vcg_ext::ScaledJacobian(p.data(), referenceNormal[i]) : vcg_ext::ScaledJacobian(p.data());
                 r.minJacobian = std::min(r.minJacobian, j);
                 jsum += j;
+                jacobians.push_back(j);
                 r.quadsBelow03 += j < 0.3;
                 r.invertedQuads += j <= 0;
+                r.foldedQuads += IsFolded(p.data());
             } else if (f.size() == 3) ++r.triangles;
             else ++r.others;
             for (size_t k = 0; k < f.size(); ++k) {
-                int u = f[k], w = f[(k + 1) % f.size()];
-                edgeUse[{std::min(u, w), std::max(u, w)}]++;
-                faceCount[u]++;
-                if (f.size() != 4) touchesTriangle[u] = 1;
+                edges.push_back(EdgeKey(f[k], f[(k + 1) % f.size()]));
+                faceCount[f[k]]++;
+                if (f.size() != 4) touchesTriangle[f[k]] = 1;
             }
         }
-        for (auto &e : edgeUse) {
-            valence[e.first.first]++;
-            valence[e.first.second]++;
-            if (e.second == 1) onBoundary[e.first.first] = onBoundary[e.first.second] = 1;
+        std::sort(edges.begin(), edges.end());
+        std::vector<int> valence(pm.points.size(), 0);
+        for (size_t i = 0; i < edges.size();) {
+            size_t j = i;
+            while (j < edges.size() && edges[j] == edges[i]) ++j;
+            const int u = int(edges[i] >> 32), w = int(edges[i] & 0xffffffffu);
+            valence[u]++;
+            valence[w]++;
+            if (j - i == 1) onBoundary[u] = onBoundary[w] = 1;
+            i = j;
         }
         for (size_t v = 0; v < pm.points.size(); ++v) {
             if (faceCount[v] == 0 || onBoundary[v] || touchesTriangle[v]) continue;
@@ -91,6 +112,11 @@ public:
         r.quadCountFraction = n ? double(r.quads) / n : 0;
         r.quadAreaFraction = total > 0 ? quadArea / total : 0;
         r.meanJacobian = r.quads ? jsum / r.quads : 0;
+        if (!jacobians.empty()) {
+            const size_t rank = std::max<size_t>(1, size_t(std::ceil(0.05 * jacobians.size()))) - 1;
+            std::nth_element(jacobians.begin(), jacobians.begin() + rank, jacobians.end());
+            r.p5Jacobian = jacobians[rank];
+        }
         if (!r.quads) r.minJacobian = 0;
         return r;
     }

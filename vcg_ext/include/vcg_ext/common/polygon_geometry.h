@@ -54,6 +54,21 @@ inline double ScaledJacobian(const Vec3d *q)
     return l > 0 ? ScaledJacobian(q, a / l) : -1.0;
 }
 
+// A quad is folded when its two triangles meet at more than this angle (between their normals)
+// whichever diagonal splits it: no flat writing of it follows the surface.
+constexpr double kFoldAngleDeg = 60;
+
+inline bool IsFolded(const Vec3d *q)
+{
+    const double limit = std::cos(kFoldAngleDeg * M_PI / 180);
+    auto bent = [&](int i) {  // the split along the diagonal q[i] - q[i+2]
+        const Vec3d a = (q[(i + 1) % 4] - q[i]) ^ (q[(i + 2) % 4] - q[i]), b = (q[(i + 2) % 4] - q[i]) ^ (q[(i + 3) % 4] - q[i]);
+        const double la = a.Norm(), lb = b.Norm();
+        return la > 0 && lb > 0 && (a * b) < limit * la * lb;
+    };
+    return bent(0) && bent(1);
+}
+
 // Which feature of a triangle (a, b, c) a closest point lies on.
 enum TriangleFeature { OnVertexA, OnVertexB, OnVertexC, OnEdgeAB, OnEdgeBC, OnEdgeCA, InsideTriangle };
 

@@ -280,7 +280,7 @@ private:
     // The side, opposite `from`, of the triangle at `from` that the direction to `to` passes through.
     int CrossedEdge(int from, int to) const
     {
-        P3 n = m.VertexNormal(from);
+        P3 n = m.InputNormal(from);
         auto tangent = [&](const P3 &v) { return v - n * (v * n); };
         P3 c = tangent(m.pos[to] - m.pos[from]);
         int found = -1;
@@ -315,8 +315,7 @@ private:
         std::array<int, 4> loop{h, m.FindHalfEdge(b, c), m.FindHalfEdge(c, d), m.FindHalfEdge(d, a)};
         for (int e : loop)
             if (e < 0 || !m.IsTri(m.heFace[e])) return false;
-        P3 n = m.VertexNormal(a) + m.VertexNormal(b);
-        if (QuadShape(a, b, c, d, n) <= p.minQuadJacobian) return false;
+        if (QuadShape(a, b, c, d) <= p.minQuadJacobian) return false;
         std::vector<int> faces, inner;
         if (!m.EnclosedTriangles(loop, faces, inner)) return false;
         if (!m.QuadHasFreeDiagonal(a, b, c, d, faces) || !InnerNodesNearQuad(inner, {a, b, c, d})) return false;
@@ -395,8 +394,8 @@ private:
         }
         // joining must not cut the surface: both nodes move little out of their tangent plane
         const double limit = kSeamOffPlane * std::min(m.Length(h), m.Length(n));
-        if (std::fabs((m.pos[gone] - at) * m.VertexNormal(gone)) > limit ||
-            std::fabs((m.pos[keep] - at) * m.VertexNormal(keep)) > limit)
+        if (std::fabs((m.pos[gone] - at) * m.InputNormal(gone)) > limit ||
+            std::fabs((m.pos[keep] - at) * m.InputNormal(keep)) > limit)
             return false;
         // the faces that stay around both nodes must stay valid with the joined node at `at`
         const std::vector<int> faces = m.FacesAround({keep, gone}, {m.heFace[h0], m.heFace[m.heTwin[h0]]});
@@ -430,7 +429,7 @@ private:
         const P3 point = m.pos[P] + (m.pos[R] - m.pos[P]) * t;
         int hm = home[P];
         const P3 M = proj.Project(point, hm);
-        const P3 n = m.FaceNormal(quad) + m.FaceNormal(m.heFace[s]);
+        const P3 n = m.InputFaceNormal(quad) + m.InputFaceNormal(m.heFace[s]);
         const std::array<P3, 4> kept = triangleAtR ? std::array<P3, 4>{m.pos[P], m.pos[x], m.pos[y], M}
                                                    : std::array<P3, 4>{m.pos[R], M, m.pos[x], m.pos[y]};
         auto positive = [&](const P3 &a, const P3 &b, const P3 &c) { return ((b - a) ^ (c - a)) * n > kMinSine * (b - a).SquaredNorm(); };
@@ -485,8 +484,6 @@ private:
             for (int e : loop) corners.push_back(m.Org(e));
             if (!InnerNodesNearQuad(inner, corners)) return false;
         }
-        P3 n(0, 0, 0);
-        for (int f : faces) n += m.FaceNormal(f);
         std::vector<int> v;
         for (int e : loop) v.push_back(m.Org(e));
         const int L = len;
@@ -494,20 +491,20 @@ private:
         std::vector<std::vector<int>> bestPolys;
         double bestQ = p.minQuadJacobian;
         if (L == 4) {
-            double q = QuadShape(v[0], v[1], v[2], v[3], n);
+            double q = QuadShape(v[0], v[1], v[2], v[3]);
             if (q > bestQ) { bestQ = q; bestPolys = {{0, 1, 2, 3}}; }
         } else if (L == 5) {
             for (int i = 0; i < 5; ++i) {
-                double q = QuadShape(at(i), at(i + 1), at(i + 2), at(i + 3), n);
-                if (q > bestQ && TriPositive(at(i + 3), at(i + 4), at(i), n)) {
+                double q = QuadShape(at(i), at(i + 1), at(i + 2), at(i + 3));
+                if (q > bestQ && TriPositive(at(i + 3), at(i + 4), at(i))) {
                     bestQ = q;
                     bestPolys = {{i, (i + 1) % 5, (i + 2) % 5, (i + 3) % 5}, {(i + 3) % 5, (i + 4) % 5, i}};
                 }
             }
         } else if (L == 6) {
             for (int i = 0; i < 3; ++i) {
-                double q = std::min(QuadShape(at(i), at(i + 1), at(i + 2), at(i + 3), n),
-                                    QuadShape(at(i + 3), at(i + 4), at(i + 5), at(i), n));
+                double q = std::min(QuadShape(at(i), at(i + 1), at(i + 2), at(i + 3)),
+                                    QuadShape(at(i + 3), at(i + 4), at(i + 5), at(i)));
                 if (q > bestQ) {
                     bestQ = q;
                     bestPolys = {{i, i + 1, i + 2, (i + 3) % 6}, {(i + 3) % 6, (i + 4) % 6, (i + 5) % 6, i}};

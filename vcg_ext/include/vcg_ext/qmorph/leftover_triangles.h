@@ -89,7 +89,7 @@ private:
         v = {t.v[(k + 1) % 3], t.v[(k + 2) % 3], t.v[k], m.Org(e[3]), m.Org(e[4])};
     }
 
-    bool SplitIsValid(const std::array<int, 5> &v, int i, const P3 &n) const
+    bool SplitIsValid(const std::array<int, 5> &v, int i) const
     {
         for (int a = 0; a < 5; ++a)
             for (int b = a + 1; b < 5; ++b)
@@ -100,7 +100,7 @@ private:
             bool removed = (x == v[0] && y == v[2]) || (x == v[2] && y == v[0]);
             return !removed && m.EdgeExists(x, y);
         };
-        return !m.EdgeExists(a, c) && !m.NewChordBetweenFrontNodes(a, c) && TriPositive(a, b, c, n) && QuadShape(c, d, e, a, n) > p.migrationMinJacobian &&
+        return !m.EdgeExists(a, c) && !m.NewChordBetweenFrontNodes(a, c) && TriPositive(a, b, c) && QuadShape(c, d, e, a) > p.migrationMinJacobian &&
                !(taken(c, e) && taken(d, a));
     }
 
@@ -156,10 +156,9 @@ private:
                 bool onPath = false;
                 for (int s = int(head); s >= 0 && !onPath; s = moves[s].parent) onPath = moves[s].face == face;
                 if (onPath) continue;
-                P3 n = m.FaceNormal(face) + m.FaceNormal(t.face);
                 if (m.IsTri(face)) {
                     int w = m.Org(m.hePrev[m.heTwin[t.e[k]]]);  // the other triangle's apex
-                    if (face != tri && QuadShape(t.v[(k + 1) % 3], t.v[(k + 2) % 3], t.v[k], w, n) > p.migrationMinJacobian) {
+                    if (face != tri && QuadShape(t.v[(k + 1) % 3], t.v[(k + 2) % 3], t.v[k], w) > p.migrationMinJacobian) {
                         goal = int(head);
                         goalSide = k;
                         return true;
@@ -171,7 +170,7 @@ private:
                 std::array<int, 5> v, e;
                 Pentagon(t, k, v, e);
                 for (int i = 0; i < 5; ++i) {
-                    if (!SplitIsValid(v, i, n)) continue;
+                    if (!SplitIsValid(v, i)) continue;
                     Move next;
                     next.v = {v[i], v[(i + 1) % 5], v[(i + 2) % 5]};
                     next.e = {e[i], e[(i + 1) % 5], -1};
@@ -211,8 +210,7 @@ private:
         int t = m.heTwin[h];
         int a = m.Org(h), b = m.Dst(h), c = m.Org(m.hePrev[h]), d = m.Org(m.hePrev[t]);
         if (!m.QuadHasFreeDiagonal(b, c, a, d, {m.heFace[h], m.heFace[t]})) return -1;
-        P3 n = m.FaceNormal(m.heFace[h]) + m.FaceNormal(m.heFace[t]);
-        return QuadShape(b, c, a, d, n);
+        return QuadShape(b, c, a, d);
     }
 
     // The quad left after removing a doublet node must not be inverted.
@@ -223,8 +221,7 @@ private:
         if (out.size() != 2 || !m.IsQuad(m.heFace[out[0]]) || !m.IsQuad(m.heFace[out[1]])) return false;
         int h1 = out[0], h2 = out[1];
         int a = m.Dst(h1), b = m.Dst(m.heNext[h1]), c = m.Dst(h2), d = m.Dst(m.heNext[h2]);
-        P3 n = m.FaceNormal(m.heFace[h1]) + m.FaceNormal(m.heFace[h2]);
-        return QuadShape(a, b, c, d, n) > p.minQuadJacobian && m.QuadHasFreeDiagonal(a, b, c, d, {m.heFace[h1], m.heFace[h2]}) &&
+        return QuadShape(a, b, c, d) > p.minQuadJacobian && m.QuadHasFreeDiagonal(a, b, c, d, {m.heFace[h1], m.heFace[h2]}) &&
                InnerNodesNearQuad({v}, {a, b, c, d});
     }
 };

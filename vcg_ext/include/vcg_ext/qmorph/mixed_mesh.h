@@ -19,6 +19,7 @@
 
 #include <vcg_ext/common/edge_pairing.h>
 #include <vcg_ext/common/polygon_geometry.h>
+#include <vcg_ext/qmorph/surface_projector.h>
 
 namespace vcg_ext {
 namespace qmorph {
@@ -59,6 +60,8 @@ public:
     // faces
     std::vector<int> faceHe, faceSize;  // faceSize 0: dead
     std::vector<int> faceLevel;         // quads: the row they were made in
+    const SurfaceProjector *input = nullptr;  // see SetInputSurface
+    const std::vector<int> *home = nullptr;
 
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }
@@ -235,6 +238,61 @@ public:
         for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) p[k] = pos[Org(h)];
         return VectorArea(p, faceSize[f]);
     }
+    // The input surface the mesh lies on, and per node the triangle of it the node lies on (its
+    // home): the reference of every orientation test, so that no operation can turn a face upside
+    // down on the surface (a face's own normal cannot tell). Without it, the mesh's own normals.
+    void SetInputSurface(const SurfaceProjector *surface, const std::vector<int> *homeTriangle)
+    {
+        input = surface;
+        home = homeTriangle;
+    }
+    // Unit normal of the input surface at node v.
+    P3 InputNormal(int v) const
+    {
+        if (!input || v >= int(home->size()) || (*home)[v] < 0 || (*home)[v] >= input->TriangleCount()) return VertexNormal(v);
+        const P3 &n = input->Normal((*home)[v]);
+        return n.SquaredNorm() > 0 ? n : VertexNormal(v);
+    }
+    // Unit normal of the input surface at `point`: the normal of the input triangle nearest it,
+    // found by walking from the home of node `near`; (0, 0, 0) without an input surface.
+    P3 InputNormalAt(const P3 &point, int near) const
+    {
+        if (!input || near < 0 || near >= int(home->size())) return P3(0, 0, 0);
+        int t = (*home)[near];
+        input->Project(point, t);
+        return input->Normal(t);
+    }
+    // The same, from the node whose walk ends nearest `point` (a greedy walk can stop short on a
+    // strongly curved surface): costlier, for the final judgement.
+    P3 InputNormalAtNearest(const P3 &point, const int *near, int count) const
+    {
+        if (!input) return P3(0, 0, 0);
+        double best = -1;
+        int bestT = -1;
+        for (int i = 0; i < count; ++i) {
+            if (near[i] < 0 || near[i] >= int(home->size())) continue;
+            int t = (*home)[near[i]];
+            const double d = (input->Project(point, t) - point).SquaredNorm();
+            if (bestT < 0 || d < best) { best = d; bestT = t; }
+        }
+        return bestT < 0 ? P3(0, 0, 0) : input->Normal(bestT);
+    }
+    // Unit normal of the input surface under face f, at its centroid (as an independent judge
+    // measures it: a face is flipped when it points away from it); `exact` walks from every corner.
+    P3 InputFaceNormal(int f, bool exact = false) const
+    {
+        P3 c(0, 0, 0);
+        int corners[4];
+        int h = faceHe[f];
+        for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) {
+            corners[k] = Org(h);
+            c += pos[corners[k]];
+        }
+        c /= double(faceSize[f]);
+        const P3 n = exact ? InputNormalAtNearest(c, corners, faceSize[f]) : InputNormalAt(c, corners[0]);
+        return n.SquaredNorm() > 0 ? n : UnitFaceNormal(f);
+    }
+
     // Unit normal of a node from its faces (all in one patch: never averaged across a crease).
     P3 VertexNormal(int v) const
     {
@@ -262,19 +320,17 @@ public:
     }
 
     // Worst quality(f, n) over `faces` now and with the `moved` nodes all at `at`; each face is
-    // rated against its unit normal from before the move. Positions are restored.
+    // rated against the input surface's normal under it, before and after. Positions are restored.
     template <class Quality>
     std::pair<double, double> WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces,
                                                    Quality quality)
     {
-        std::vector<P3> normals;
-        for (int f : faces) normals.push_back(UnitFaceNormal(f));
         double before = 1e9, after = 1e9;
-        for (size_t i = 0; i < faces.size(); ++i) before = std::min(before, quality(faces[i], normals[i]));
+        for (int f : faces) before = std::min(before, quality(f, InputFaceNormal(f)));
         std::vector<P3> old;
         for (int v : moved) old.push_back(pos[v]);
         for (int v : moved) pos[v] = at;
-        for (size_t i = 0; i < faces.size(); ++i) after = std::min(after, quality(faces[i], normals[i]));
+        for (int f : faces) after = std::min(after, quality(f, InputFaceNormal(f)));  // the surface under the new place
         size_t k = 0;
         for (int v : moved) pos[v] = old[k++];
         return {before, after};
@@ -294,8 +350,8 @@ public:
     }
 
     // Moves node v to `to` when no face around it folds (quality kMinMoveQuality) or gets worse than
-    // the worst one now or than kFairMoveQuality; quality(f, n) rates face f against its unit
-    // normal from before the move.
+    // the worst one now or than kFairMoveQuality; quality(f, n) rates face f against the input
+    // surface's normal n under it (a face turned over on the surface is negative).
     template <class Quality>
     bool TryMoveNode(int v, const P3 &to, Quality quality)
     {
@@ -305,15 +361,6 @@ public:
             return true;
         }
         return false;
-    }
-
-    // Scaled Jacobian of quad f against its own normal (polygon_geometry.h).
-    double QuadScaledJacobian(int f) const
-    {
-        P3 q[4];
-        int h = faceHe[f];
-        for (int k = 0; k < 4; ++k, h = heNext[h]) q[k] = pos[Org(h)];
-        return ScaledJacobian(q);
     }
 
     // ---- construction -------------------------------------------------------------------------
@@ -366,7 +413,7 @@ public:
 
     // ---- edge flip ----------------------------------------------------------------------------
     // Flip of the edge of h between two triangles (a b c) and (b a d) into (c a d) and (d b c).
-    // The convexity test uses the two triangles' summed normal. Refuses constrained edges.
+    // The convexity test is against the input surface's normal. Refuses constrained edges.
     bool CanFlip(int h) const
     {
         int t = heTwin[h];
@@ -374,7 +421,7 @@ public:
         int a = Org(h), b = Dst(h), c = Org(hePrev[h]), d = Org(hePrev[t]);
         if (c == d || EdgeExists(c, d) || OppositeInQuad(c, d) || NewChordBetweenFrontNodes(c, d)) return false;
         P3 n1 = FaceNormal(heFace[h]), n2 = FaceNormal(heFace[t]);
-        P3 n = n1 + n2;
+        P3 n = InputFaceNormal(heFace[h]) + InputFaceNormal(heFace[t]);
         if (!(n.Norm() > 0)) return false;
         // across a ridge a flip would change the surface (cut or fill the ridge): refused
         if ((n1 * n2) < std::cos(kMaxFlipDihedralDeg * M_PI / 180) * n1.Norm() * n2.Norm()) return false;
@@ -384,7 +431,9 @@ public:
         auto positive = [&](int x, int y, int z) {
             P3 u = pos[y] - pos[x], v = pos[z] - pos[x], w = pos[z] - pos[y];
             double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
-            return (u ^ v) * n > kMinFlipSine * l2;
+            P3 under = InputNormalAt((pos[x] + pos[y] + pos[z]) / 3.0, x);  // the surface under the new triangle
+            if (!(under.SquaredNorm() > 0)) under = n;
+            return (u ^ v) * n > kMinFlipSine * l2 && (u ^ v) * under > kMinFlipSine * l2;
         };
         return positive(c, a, d) && positive(d, b, c);
     }

@@ -33,17 +33,20 @@ public:
             }
     }
 
-    // Quads still below 0.3 scaled Jacobian: each free node of theirs moves (in its tangent plane,
-    // back onto the input surface) to the nearby position that most raises the worst quality of
-    // its faces. A local pattern search; only moves that raise that worst quality are kept.
-    void ImproveBadQuads()
+    // Quads still below 0.3 scaled Jacobian and triangles turned over on the surface (or nearly):
+    // each free node of theirs moves (in its tangent plane, back onto the input surface) to the
+    // nearby position that most raises the worst quality of its faces. A local pattern search;
+    // only moves that raise that worst quality are kept.
+    void ImproveBadFaces()
     {
         for (int pass = 0; pass < kRescuePasses; ++pass) {
             int moved = 0;
             for (int f = 0; f < m.FaceCount(); ++f) {
-                if (!m.FaceAlive(f) || !m.IsQuad(f) || m.QuadScaledJacobian(f) >= kFairQuad) continue;
+                if (!m.FaceAlive(f)) continue;
+                const double q = FaceQualityAt(f, m.InputFaceNormal(f, true));
+                if (q >= (m.IsQuad(f) ? kFairQuad : kPoorTriangle)) continue;
                 int g = m.faceHe[f];
-                for (int k = 0; k < 4; ++k, g = m.heNext[g])
+                for (int k = 0; k < m.faceSize[f]; ++k, g = m.heNext[g])
                     if (!m.vertFixed[m.Org(g)]) moved += OptimizeNode(m.Org(g));
             }
             if (!moved) break;
@@ -55,6 +58,8 @@ private:
     // than this times the mean input edge (or than they were).
     static constexpr double kChordTolerance = 0.05;
     static constexpr int kRescuePasses = 4;
+    // Triangles below this quality (1 equilateral, <= 0 turned over) have their nodes re-placed.
+    static constexpr double kPoorTriangle = 0.05;
     // Pattern search: steps (fractions of the mean edge at the node) in this many directions; a
     // move is kept when it raises the worst face quality by at least kMinGain.
     static constexpr double kSearchSteps[3] = {0.3, 0.15, 0.07};
@@ -76,12 +81,10 @@ private:
     bool OptimizeNode(int v)
     {
         std::vector<int> faces;
-        std::vector<P3> normals;
         double length = 0;
         int edges = 0;
         m.ForEachOutgoing(v, [&](int g) {
             faces.push_back(m.heFace[g]);
-            normals.push_back(m.FaceNormal(m.heFace[g]).Normalize());
             length += m.Length(g);
             ++edges;
         });
@@ -89,7 +92,7 @@ private:
         length /= edges;
         auto worst = [&]() {
             double w = 1e9;
-            for (size_t i = 0; i < faces.size(); ++i) w = std::min(w, FaceQualityAt(faces[i], normals[i]));
+            for (int f : faces) w = std::min(w, FaceQualityAt(f, m.InputFaceNormal(f, true)));
             return w;
         };
         // how far the faces' centres are from the input surface: a move must not cut a feature
@@ -108,7 +111,7 @@ private:
         const P3 start = m.pos[v];
         const double current = worst();
         const double allowed = std::max(deviation(), kChordTolerance * meanLength);
-        const P3 n = m.VertexNormal(v);
+        const P3 n = m.InputNormal(v);
         P3 t1 = std::fabs(n[0]) < 0.9 ? P3(1, 0, 0) : P3(0, 1, 0);
         t1 = (t1 - n * (t1 * n)).Normalize();
         const P3 t2 = n ^ t1;

@@ -47,8 +47,8 @@ public:
             }
         }
         if (p.smoothing) {
-            for (int it = 0; it < p.finalSmoothing; ++it) placement.SmoothAll();
-            if (p.rescueBadQuads) placement.ImproveBadQuads();
+            for (int it = 0; it < p.finalSmoothing; ++it) placement.SmoothAll(true);  // topology is final: keep edges on the surface
+            if (p.rescueBadQuads) placement.ImproveBadFaces();
         }
         return context.stats;
     }

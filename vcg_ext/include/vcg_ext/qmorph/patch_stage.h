@@ -71,6 +71,7 @@ struct PatchContext {
         : m(mesh), proj(surface), home(homeTriangle), p(params)
     {
         home.resize(m.VertexCount(), 0);
+        m.SetInputSurface(&proj, &home);
         vertexCap = kVertexCapFactor * m.VertexCount() + kVertexCapSlack;
         double sum = 0;
         int n = 0;
@@ -114,13 +115,29 @@ protected:
     // than the worst they replace), and quads still below it have their nodes re-placed at the end.
     static constexpr double kFairQuad = 0.3;
 
-    // Shape of the quad (a b c d): its scaled Jacobian, -1 when it is inverted against the reference
-    // normal n, a needle or has repeated nodes.
-    double QuadShape(int a, int b, int c, int d, const P3 &n) const
+    // The input surface's normal under a polygon of nodes, present or planned: at its centroid.
+    P3 InputNormalOf(std::initializer_list<int> corners) const
+    {
+        P3 c(0, 0, 0);
+        for (int v : corners) c += m.pos[v];
+        const P3 n = m.InputNormalAt(c / double(corners.size()), *corners.begin());
+        return n.SquaredNorm() > 0 ? n : m.InputNormal(*corners.begin());
+    }
+
+    // Shape of the quad (a b c d) on the input surface (see the other QuadShape); -1 also when it
+    // has repeated nodes.
+    double QuadShape(int a, int b, int c, int d) const
     {
         if (!m.DistinctNodes({a, b, c, d})) return -1;
-        return QuadShape({m.pos[a], m.pos[b], m.pos[c], m.pos[d]}, n);
+        const std::array<P3, 4> pos{m.pos[a], m.pos[b], m.pos[c], m.pos[d]};
+        // nor may it face away from the surface at any corner (a quad over a spike of the input)
+        const P3 N = VectorArea(pos.data(), 4);
+        for (int v : {a, b, c, d})
+            if (N * m.InputNormal(v) <= 0) return -1;
+        return QuadShape(pos, InputNormalOf({a, b, c, d}));
     }
+    // Shape of the quad `pos` against the input surface's normal n under it: its scaled Jacobian,
+    // -1 when a needle, upside down or turned over at a corner on the surface, or folded.
     static double QuadShape(const std::array<P3, 4> &pos, const P3 &n)
     {
         double shortest = 1e300, longest = 0;  // a needle is as bad as a fold
@@ -133,10 +150,15 @@ protected:
         const P3 N = VectorArea(pos.data(), 4);
         const double l = N.Norm();
         if (!(l > 0) || N * n <= 0) return -1;
+        // turned over on the surface at a corner, or folded across both diagonals: invalid
+        const double nl = n.Norm();
+        if (!(nl > 0) || ScaledJacobian(pos.data(), n / nl) <= 0 || IsFolded(pos.data())) return -1;
         return ScaledJacobian(pos.data(), N / l);
     }
-    bool TriPositive(int a, int b, int c, const P3 &n) const
+    // The triangle (a b c) is well oriented on the input surface, and not a sliver.
+    bool TriPositive(int a, int b, int c) const
     {
+        const P3 n = InputNormalOf({a, b, c});
         P3 u = m.pos[b] - m.pos[a], v = m.pos[c] - m.pos[a], w = m.pos[c] - m.pos[b];
         double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
         double nl = n.Norm();
@@ -148,13 +170,20 @@ protected:
     {
         if (!m.IsQuad(f)) return m.TriangleQuality(f, n);
         const int g = m.faceHe[f];
-        return QuadShape(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]), n);
+        return QuadShape(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]));
     }
 
-    // Moves node v when no face around it folds or gets worse than its worst one (see TryMoveNode).
+    // Moves node v to the input surface's point nearest `to` when no face around it folds, turns
+    // over on the surface or gets worse than its worst one (see TryMoveNode); its home follows.
     bool TryMove(int v, const P3 &to)
     {
-        return m.TryMoveNode(v, to, [&](int f, const P3 &n) { return FaceQualityAt(f, n); });
+        int hm = home[v];
+        const P3 at = proj.Project(to, hm);
+        const int old = home[v];
+        home[v] = hm;  // the faces are rated against the surface under the new place
+        if (m.TryMoveNode(v, at, [&](int f, const P3 &n) { return FaceQualityAt(f, n); })) return true;
+        home[v] = old;
+        return false;
     }
 
     // Laplacian target, moved only in the tangent plane, projected back onto the input surface;
@@ -169,10 +198,10 @@ protected:
         });
         if (n < 2) return;
         P3 target = sum / double(n);
-        P3 nv = m.VertexNormal(v);
+        P3 nv = m.InputNormal(v);
         P3 move = target - m.pos[v];
         move -= nv * (move * nv);
-        TryMove(v, proj.Project(m.pos[v] + move, home[v]));
+        TryMove(v, m.pos[v] + move);
     }
 
     int NewVertexOnEdge(int h, const P3 &point)
@@ -181,7 +210,7 @@ protected:
         int v = m.SplitEdge(h, point);
         home.resize(m.VertexCount(), 0);
         home[v] = home[from];
-        TryMove(v, proj.Project(m.pos[v], home[v]));  // a point of a current edge: back onto the input surface
+        TryMove(v, m.pos[v]);  // a point of a current edge: back onto the input surface
         ++stats.splits;
         return v;
     }

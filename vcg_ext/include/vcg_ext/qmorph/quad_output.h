@@ -33,28 +33,21 @@ inline int NewPointIndex(int id) { return -1 - id; }
 class QuadOutput
 {
 public:
-    // Points added to the mesh: front subdivision points and nodes made inside patches.
+    // Points added to the mesh: nodes made inside patches.
     std::vector<P3> newPoints;
-    // Front edges cut into pieces: edge key -> its first point in sharedOut; sharedOut: the output
-    // id of each shared point; frontChains: the selected pieces, as output ids.
-    std::unordered_map<uint64_t, int> sharedOfEdge;
-    std::vector<int> sharedOut;
-    std::vector<std::pair<int, int>> frontChains;
     int quads = 0, triangles = 0;
+    // Per polygon, in the order they are written: the input surface's unit normal under it.
+    std::vector<P3> referenceNormals;
 
     explicit QuadOutput(size_t inputVertices) : movedTo(inputVertices, -1), used(inputVertices, 0) {}
 
-    // Collects the faces of a meshed patch. sharedOfLocal: local node -> shared point index.
-    void AddPatch(const MixedMesh &mm, const SurfaceProjector &surface, const std::vector<int> &home, const PatchInput &in,
-                  const std::unordered_map<int, int> &sharedOfLocal)
+    // Collects the faces of a meshed patch.
+    void AddPatch(const MixedMesh &mm, const SurfaceProjector &surface, const std::vector<int> &home, const PatchInput &in)
     {
         std::vector<int> outId(mm.VertexCount(), 0);
         for (int v = 0; v < mm.VertexCount(); ++v) {
             if (!mm.vertAlive[v]) continue;
-            auto shared = sharedOfLocal.find(v);
-            if (shared != sharedOfLocal.end()) {
-                outId[v] = sharedOut[shared->second];
-            } else if (v < int(in.globalOf.size())) {
+            if (v < int(in.globalOf.size())) {
                 const int g = in.globalOf[v];
                 outId[v] = g;
                 used[g] = 1;
@@ -80,6 +73,7 @@ public:
             }
             poly.diagonal = poly.size == 4 ? PreferredDiagonal(mm, surface, home, corner) : kEitherDiagonal;
             polygons.push_back(poly);
+            referenceNormals.push_back(mm.InputFaceNormal(f, true));
             if (poly.size == 4) ++quads; else ++triangles;
         }
     }
@@ -96,9 +90,7 @@ public:
         // initial front edges survive unchanged, so the pairs are still edges.
         const int firstNew = int(m.vert.size());
         auto resolve = [&](int id) { return id >= 0 ? id : firstNew + NewPointIndex(id); };
-        std::unordered_set<uint64_t> frontPairs = in.selectedPairs;
-        for (const auto &e : sharedOfEdge) frontPairs.erase(e.first);  // cut into pieces: no longer an edge
-        for (const auto &e : frontChains) frontPairs.insert(EdgeKey(resolve(e.first), resolve(e.second)));
+        const std::unordered_set<uint64_t> &frontPairs = in.selectedPairs;
 
         for (size_t v = 0; v < m.vert.size(); ++v) {
             if (m.vert[v].IsD()) continue;
@@ -127,7 +119,8 @@ public:
             for (int k = 0; k < 3; ++k)
                 if (frontPairs.count(EdgeKey(vv[k], vv[(k + 1) % 3]))) f.SetFaceEdgeS(k);
         };
-        for (const Polygon &p : polygons) {
+        for (size_t i = 0; i < polygons.size(); ++i) {
+            const Polygon &p = polygons[i];
             const int a = resolve(p.v[0]), b = resolve(p.v[1]), c = resolve(p.v[2]);
             if (p.size == 3) {
                 setFace(*fi, a, b, c, p.quality);
@@ -142,6 +135,10 @@ public:
             bool acDiagonal = p.diagonal != kEitherDiagonal
                                   ? p.diagonal == kDiagonal02
                                   : std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
+            // never a triangle upside down on the surface when the other diagonal avoids it
+            auto up = [&](const P3 &x, const P3 &y, const P3 &z) { return ((y - x) ^ (z - x)) * referenceNormals[i] > 0; };
+            const bool acUp = up(pa, pb, pc) && up(pa, pc, pd), bdUp = up(pb, pc, pd) && up(pb, pd, pa);
+            if (acUp != bdUp) acDiagonal = acUp;
             if (sides.count(EdgeKey(a, c))) acDiagonal = false;
             else if (sides.count(EdgeKey(b, d))) acDiagonal = true;
             sides.insert(acDiagonal ? EdgeKey(a, c) : EdgeKey(b, d));  // two quads around a doublet node must not share a diagonal

@@ -25,11 +25,22 @@ public:
     {
         pts = points;
         tri = tris;
+        normal.resize(tri.size());
+        for (size_t t = 0; t < tri.size(); ++t) {
+            const P3 n = (pts[tri[t][1]] - pts[tri[t][0]]) ^ (pts[tri[t][2]] - pts[tri[t][0]]);
+            const double l = n.Norm();
+            normal[t] = l > 0 ? n / l : P3(0, 0, 0);
+        }
         nb.assign(tri.size(), {-1, -1, -1});
         const std::vector<int> twin = EdgePairing::Twins(tri);
         for (size_t h = 0; h < twin.size(); ++h)
             if (twin[h] >= 0) nb[h / 3][h % 3] = twin[h] / 3;
     }
+
+    // Unit normal of triangle t (zero for a degenerate one): the input surface's orientation, the
+    // reference every flip test of the working mesh is made against.
+    const P3 &Normal(int t) const { return normal[t]; }
+    int TriangleCount() const { return int(tri.size()); }
 
     // Closest point to p found by walking from `home` (updated to the triangle of the result).
     P3 Project(const P3 &p, int &home) const
@@ -77,6 +88,7 @@ private:
     std::vector<P3> pts;
     std::vector<std::array<int, 3>> tri;
     std::vector<std::array<int, 3>> nb;
+    std::vector<P3> normal;
 };
 
 }  // namespace vcg_ext

@@ -87,8 +87,8 @@ private:
                 int val[6];
                 for (int k = 0; k < 6; ++k) val[k] = m.Valence(v[k]);
                 const int a = 3, b = 0;  // positions of the current diagonal's ends
-                P3 n = m.FaceNormal(m.heFace[h]) + m.FaceNormal(m.heFace[t]);
-                double oldQ = std::min(m.QuadScaledJacobian(m.heFace[h]), m.QuadScaledJacobian(m.heFace[t]));
+                double oldQ = std::min(FaceQualityAt(m.heFace[h], m.InputFaceNormal(m.heFace[h])),
+                                       FaceQualityAt(m.heFace[t], m.InputFaceNormal(m.heFace[t])));
                 double oldDev = dev(v[a], val[a]) + dev(v[b], val[b]);
                 int bestI = -1;
                 double bestGain = 1e-9, bestQ = 0;
@@ -97,8 +97,8 @@ private:
                     if (m.EdgeExists(v[i], v[j]) || m.NewChordBetweenFrontNodes(v[i], v[j])) continue;
                     double before = oldDev + dev(v[i], val[i]) + dev(v[j], val[j]);
                     double after = dev(v[a], val[a] - 1) + dev(v[b], val[b] - 1) + dev(v[i], val[i] + 1) + dev(v[j], val[j] + 1);
-                    double q = std::min(QuadShape(v[i], v[i + 1], v[i + 2], v[j], n), QuadShape(v[j], v[(j + 1) % 6], v[(j + 2) % 6], v[i], n));
-                    if (q < std::min(kFairQuad, oldQ)) continue;
+                    double q = std::min(QuadShape(v[i], v[i + 1], v[i + 2], v[j]), QuadShape(v[j], v[(j + 1) % 6], v[(j + 2) % 6], v[i]));
+                    if (q <= 0 || q < std::min(kFairQuad, oldQ)) continue;  // never invalid, even where it was
                     if (before - after > bestGain) { bestGain = before - after; bestI = i; bestQ = q; }
                 }
                 if (bestI < 0) continue;
@@ -232,7 +232,7 @@ private:
         // the two halves sit on either side of the line a-b, around v's foot on it: the new quad
         // (a v b v') is then a rhombus with diagonals a-b and v-v'
         const int a = m.Dst(out[i]), b = m.Dst(out[j]);
-        const P3 normal = m.VertexNormal(v), ab = m.pos[b] - m.pos[a];
+        const P3 normal = m.InputNormal(v), ab = m.pos[b] - m.pos[a];
         const double t = std::max(kOpenFootMin, std::min(kOpenFootMax, ((m.pos[v] - m.pos[a]) * ab) / ab.SquaredNorm()));
         const P3 centre = (m.pos[v] + (m.pos[a] + ab * t)) * 0.5;
         P3 side = normal ^ ab;
@@ -247,10 +247,11 @@ private:
         // every quad around (v replaced by its half's position) and the new quad must be fair
         auto fair = [&](int k, const P3 &at) {
             const int g = out[k];
-            const P3 n0 = m.FaceNormal(m.heFace[g]);
+            const P3 n0 = m.InputFaceNormal(m.heFace[g]);
             const std::array<P3, 4> q{at, m.pos[m.Dst(g)], m.pos[m.Dst(m.heNext[g])], m.pos[m.Org(m.hePrev[g])]};
             const double before = QuadShape({m.pos[v], q[1], q[2], q[3]}, n0);
-            return QuadShape(q, n0) >= std::min(kFairQuad, before);
+            const double after = QuadShape(q, n0);
+            return after > 0 && after >= std::min(kFairQuad, before);
         };
         for (int k = i; k != j; k = (k + 1) % n)
             if (!fair(k, p1)) return false;

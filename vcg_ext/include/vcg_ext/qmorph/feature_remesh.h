@@ -1,0 +1,267 @@
+// Isotropic re-meshing of the whole mesh before Q-Morph, with vcglib's IsotropicRemeshing (Botsch-
+// Kobbelt: split, collapse, flip toward valence 6, tangential relaxation, projection on the input),
+// keeping the front (selected face-edges) and the sharp creases as exact chains of output edges.
+//
+// How the 2020.09 remesher is driven so that features stay where they are:
+// - features (front and unselected sharp creases) are its "user selected creases" (FaceEdgeS with
+//   userSelectedCreases): they are never flipped, their vertices never relaxed, and a split of a
+//   feature edge puts the new vertex at its midpoint, on the feature;
+// - its collapses may slide a feature vertex along a nearly straight feature and it has no fixed
+//   vertices (its collapse passes reset the vertex selection), so collapses run in a pass of their
+//   own with selectedOnly, on a face selection that leaves out every face touching a feature vertex:
+//   a vertex with an unselected face never moves in a collapse;
+// - no clean-up pass (it would delete and compact faces with its own rules).
+// Afterwards the front is re-selected: an output edge is front when the original edge it lies on
+// (found by its midpoint in a segment grid) was selected; creases are sharp edges again and the
+// partition cuts them as before.
+#ifndef VCG_EXT_QMORPH_FEATURE_REMESH_H
+#define VCG_EXT_QMORPH_FEATURE_REMESH_H
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/complex/algorithms/isotropic_remeshing.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/selection.h>
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/space/index/grid_static_ptr.h>
+
+#include <vcg_ext/common/segment_grid.h>
+
+namespace vcg_ext {
+namespace qmorph {
+
+template <class MeshType>
+class FeatureRemesh
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
+    typedef typename MeshType::ScalarType ScalarType;
+    typedef vcg::tri::IsotropicRemeshing<MeshType> Remesher;
+    typedef typename MeshType::CoordType CoordType;
+    typedef vcg::GridStaticPtr<FaceType, ScalarType> Grid;
+    typedef vcg::Point3d P3;
+
+    struct Stats {
+        int featureEdges = 0, frontEdgesBefore = 0, frontEdgesAfter = 0;
+        int splits = 0, collapses = 0, flips = 0;
+        int facesBefore = 0, facesAfter = 0;
+    };
+
+    // Re-meshes m toward edge length L in `iterations` rounds; edges sharper than creaseAngleDeg
+    // (normals) are kept like the front. Needs face-face and vertex-face adjacency.
+    static Stats Do(MeshType &m, double L, int iterations, double creaseAngleDeg, vcg::CallBackPos *cb = nullptr)
+    {
+        vcg::tri::RequireVFAdjacency(m);
+        vcg::tri::RequirePerVertexMark(m);
+        vcg::tri::RequirePerFaceMark(m);
+        Stats st;
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+        st.facesBefore = m.fn;
+        SegmentGrid features(L);
+        std::vector<char> isFront;
+        MarkFeatures(m, creaseAngleDeg, features, isFront, st);
+
+        MeshType surface;  // the input surface every vertex is projected back onto (no adjacency needed)
+        EnableMark(surface.face, 0);  // its closest-point queries mark faces
+        vcg::tri::Append<MeshType, MeshType>::MeshCopy(surface, m);
+        vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(surface);
+        vcg::tri::UpdateBounding<MeshType>::Box(surface);
+        Grid grid;
+        grid.Set(surface.face.begin(), surface.face.end());
+
+        typename Remesher::Params p;
+        p.SetTargetLen(ScalarType(L));
+        p.userSelectedCreases = true;
+        p.cleanFlag = false;
+        p.surfDistCheck = true;
+        p.maxSurfDist = ScalarType(kSurfaceDistance * L);
+        p.iter = 1;
+        for (int it = 0; it < iterations; ++it) {
+            if (cb) cb(100 * it / iterations, "Q-Morph: re-meshing");
+            Pass(m, surface, p, st, true, false, false);  // split
+            SelectFacesAwayFromFeatures(m);
+            Pass(m, surface, p, st, false, true, false);  // collapse, features and their faces fixed
+            vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
+            Pass(m, surface, p, st, false, false, true);  // flip toward valence 6
+            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, grid);
+        }
+        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
+        SelectFront(m, features, isFront, st);
+        st.facesAfter = m.fn;
+        return st;
+    }
+
+private:
+    // The remesher's surface-distance check: no move or collapse may take a point of a face farther
+    // than this (times the target length) from the input surface.
+    static constexpr double kSurfaceDistance = 0.1;
+    // Tangential relaxation sweeps per round, and the worst triangle quality (vcg::Quality, 2 r / R
+    // like, 1 equilateral) a relaxation move may leave when the star was better than that.
+    static constexpr int kRelaxSweeps = 2;
+    static constexpr double kMinRelaxQuality = 0.1;
+
+    // Tangential relaxation (Botsch-Kobbelt): each vertex off the features moves toward the area-
+    // weighted centroid of its star, in the tangent plane, then onto the input surface. A move is
+    // kept only when no face of the star turns over, against the input surface's normal under the
+    // new place or against its own normal before, and the star's worst triangle stays fair.
+    static void Relax(MeshType &m, MeshType &surface, Grid &grid)
+    {
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+        std::vector<char> fixed(m.vert.size(), 0);
+        for (FaceType &f : m.face)
+            if (!f.IsD())
+                for (int i = 0; i < 3; ++i)
+                    if (IsFeature(f, i) || f.FFp(i) == &f) fixed[vcg::tri::Index(m, f.V0(i))] = fixed[vcg::tri::Index(m, f.V1(i))] = 1;
+        const ScalarType reach = surface.bbox.Diag();
+        std::vector<FaceType *> star;
+        std::vector<int> corner;
+        for (VertexType &v : m.vert) {
+            if (v.IsD() || fixed[vcg::tri::Index(m, &v)]) continue;
+            vcg::face::VFStarVF<FaceType>(&v, star, corner);
+            if (star.size() < 3) continue;
+            CoordType centroid(0, 0, 0);
+            ScalarType area = 0;
+            for (FaceType *f : star) {
+                const ScalarType a = vcg::DoubleArea(*f);
+                centroid += vcg::Barycenter(*f) * a;
+                area += a;
+            }
+            if (!(area > 0)) continue;
+            ScalarType dist = reach;
+            CoordType onSurface;
+            const FaceType *under = vcg::tri::GetClosestFaceBase(surface, grid, v.cP(), reach, dist, onSurface);
+            if (!under) continue;
+            const CoordType n = under->cN();
+            CoordType move = centroid / area - v.cP();
+            move -= n * (move * n);
+            dist = reach;
+            const FaceType *target = vcg::tri::GetClosestFaceBase(surface, grid, CoordType(v.cP() + move), reach, dist, onSurface);
+            if (!target) continue;
+            const CoordType old = v.cP();
+            double worstBefore = 1, worstAfter = 1;
+            std::vector<CoordType> normalsBefore;
+            for (FaceType *f : star) {
+                worstBefore = std::min(worstBefore, double(vcg::Quality(f->cP(0), f->cP(1), f->cP(2))));
+                normalsBefore.push_back(vcg::TriangleNormal(*f));
+            }
+            v.P() = onSurface;
+            bool ok = true;
+            for (size_t i = 0; i < star.size() && ok; ++i) {
+                const CoordType N = vcg::TriangleNormal(*star[i]);
+                ok = N * target->cN() > 0 && N * normalsBefore[i] > 0;
+                worstAfter = std::min(worstAfter, double(vcg::Quality(star[i]->cP(0), star[i]->cP(1), star[i]->cP(2))));
+            }
+            if (!ok || worstAfter < std::min(worstBefore, kMinRelaxQuality)) v.P() = old;
+        }
+    }
+
+    static void Pass(MeshType &m, MeshType &surface, typename Remesher::Params &p, Stats &st, bool split, bool collapse, bool flip)
+    {
+        p.splitFlag = split;
+        p.collapseFlag = collapse;
+        p.selectedOnly = collapse;
+        p.swapFlag = flip;
+        p.smoothFlag = p.projectFlag = false;  // Relax instead: vcglib's smoothing can turn faces over
+        Remesher::Do(m, surface, p);
+        st.splits += p.stat.splitNum;
+        st.collapses += p.stat.collapseNum;
+        st.flips += p.stat.flipNum;
+    }
+
+    static bool IsFeature(const FaceType &f, int i)
+    {
+        return f.IsFaceEdgeS(i) || (f.cFFp(i) != &f && f.cFFp(i)->IsFaceEdgeS(f.cFFi(i)));
+    }
+
+    // Optional per-face marks (MeshLab's CMeshO) are switched on; a mesh type with fixed ones has no switch.
+    template <class Container>
+    static auto EnableMark(Container &c, int) -> decltype(c.EnableMark(), void()) { c.EnableMark(); }
+    template <class Container>
+    static void EnableMark(Container &, long) {}
+
+    static P3 Pos(const VertexType *v) { return P3::Construct(v->cP()); }
+    static P3 UnitNormal(const FaceType &f)  // in double, as the partition's crease test
+    {
+        return ((Pos(f.cV(1)) - Pos(f.cV(0))) ^ (Pos(f.cV(2)) - Pos(f.cV(0)))).Normalize();
+    }
+
+    // Selected face-edges and sharp creases: both sides flagged, each entered in the grid.
+    static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<char> &isFront, Stats &st)
+    {
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
+        for (FaceType &f : m.face)
+            for (int i = 0; i < 3; ++i) {
+                FaceType *g = f.FFp(i);
+                if (g < &f) continue;  // once per edge (a border edge has g == &f)
+                const bool selected = IsFeature(f, i);
+                const bool crease = g != &f && creaseAngleDeg < 180 && UnitNormal(f) * UnitNormal(*g) < creaseCos;
+                if (!selected && !crease && g != &f) continue;
+                f.SetFaceEdgeS(i);
+                g->SetFaceEdgeS(f.FFi(i));
+                grid.Add(Pos(f.V0(i)), Pos(f.V1(i)));
+                isFront.push_back(selected);
+                ++st.featureEdges;
+                st.frontEdgesBefore += selected;
+            }
+    }
+
+    // Faces with no feature vertex: the only ones whose vertices a collapse may move.
+    static void SelectFacesAwayFromFeatures(MeshType &m)
+    {
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
+        for (FaceType &f : m.face)
+            if (!f.IsD())
+                for (int i = 0; i < 3; ++i)
+                    if (IsFeature(f, i)) {
+                        f.V0(i)->SetS();
+                        f.V1(i)->SetS();
+                    }
+        for (FaceType &f : m.face)
+            if (!f.IsD()) {
+                if (f.V(0)->IsS() || f.V(1)->IsS() || f.V(2)->IsS()) f.ClearS();
+                else f.SetS();
+            }
+        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
+    }
+
+    // Every flagged output edge lies on one original feature edge: front when that one was.
+    static void SelectFront(MeshType &m, const SegmentGrid &grid, const std::vector<char> &isFront, Stats &st)
+    {
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        for (FaceType &f : m.face)
+            for (int i = 0; i < 3; ++i) {
+                FaceType *g = f.FFp(i);
+                if (g < &f) continue;
+                bool front = false;
+                if (IsFeature(f, i)) {
+                    double d;
+                    const int id = grid.Nearest((Pos(f.V0(i)) + Pos(f.V1(i))) * 0.5, d);
+                    front = id >= 0 && isFront[id];
+                }
+                const int j = f.FFi(i);
+                if (front) {
+                    f.SetFaceEdgeS(i);
+                    g->SetFaceEdgeS(j);
+                    ++st.frontEdgesAfter;
+                } else {
+                    f.ClearFaceEdgeS(i);
+                    g->ClearFaceEdgeS(j);
+                }
+            }
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif
