@@ -36,8 +36,6 @@ inline int OwnNodeKey(int node) { return -1 - node; }
 class MixedMesh
 {
 public:
-    // Node moves: no face around may fall to this quality (folded), nor below min(worst before, fair).
-    static constexpr double kMinMoveQuality = 1e-3, kFairMoveQuality = 0.2;
     // Flips: only between triangles this close to coplanar; new triangles keep this sine of their
     // smallest angle.
     static constexpr double kMaxFlipDihedralDeg = 25, kMinFlipSine = 1e-3;
@@ -246,50 +244,32 @@ public:
         input = surface;
         home = homeTriangle;
     }
+    int HomeOf(int v) const { return input && v >= 0 && v < int(home->size()) ? (*home)[v] : -1; }
     // Unit normal of the input surface at node v.
     P3 InputNormal(int v) const
     {
-        if (!input || v >= int(home->size()) || (*home)[v] < 0 || (*home)[v] >= input->TriangleCount()) return VertexNormal(v);
-        const P3 &n = input->Normal((*home)[v]);
+        const P3 n = input ? input->Normal(HomeOf(v)) : P3(0, 0, 0);
         return n.SquaredNorm() > 0 ? n : VertexNormal(v);
     }
-    // Unit normal of the input surface at `point`: the normal of the input triangle nearest it,
-    // found by walking from the home of node `near`; (0, 0, 0) without an input surface.
+    // Unit normal of the input surface at `point`, walking from the home of node `near`; (0, 0, 0)
+    // without an input surface.
     P3 InputNormalAt(const P3 &point, int near) const
     {
-        if (!input || near < 0 || near >= int(home->size())) return P3(0, 0, 0);
-        int t = (*home)[near];
-        input->Project(point, t);
-        return input->Normal(t);
-    }
-    // The same, from the node whose walk ends nearest `point` (a greedy walk can stop short on a
-    // strongly curved surface): costlier, for the final judgement.
-    P3 InputNormalAtNearest(const P3 &point, const int *near, int count) const
-    {
-        if (!input) return P3(0, 0, 0);
-        double best = -1;
-        int bestT = -1;
-        for (int i = 0; i < count; ++i) {
-            if (near[i] < 0 || near[i] >= int(home->size())) continue;
-            int t = (*home)[near[i]];
-            const double d = (input->Project(point, t) - point).SquaredNorm();
-            if (bestT < 0 || d < best) { best = d; bestT = t; }
-        }
-        return bestT < 0 ? P3(0, 0, 0) : input->Normal(bestT);
+        const int t = HomeOf(near);
+        return input ? input->NormalAt(point, &t, 1) : P3(0, 0, 0);
     }
     // Unit normal of the input surface under face f, at its centroid (as an independent judge
     // measures it: a face is flipped when it points away from it); `exact` walks from every corner.
     P3 InputFaceNormal(int f, bool exact = false) const
     {
         P3 c(0, 0, 0);
-        int corners[4];
+        int homes[4];
         int h = faceHe[f];
         for (int k = 0; k < faceSize[f]; ++k, h = heNext[h]) {
-            corners[k] = Org(h);
-            c += pos[corners[k]];
+            c += pos[Org(h)];
+            homes[k] = HomeOf(Org(h));
         }
-        c /= double(faceSize[f]);
-        const P3 n = exact ? InputNormalAtNearest(c, corners, faceSize[f]) : InputNormalAt(c, corners[0]);
+        const P3 n = input ? input->NormalAt(c / double(faceSize[f]), homes, exact ? faceSize[f] : 1) : P3(0, 0, 0);
         return n.SquaredNorm() > 0 ? n : UnitFaceNormal(f);
     }
 
@@ -319,23 +299,6 @@ public:
         return l > 0 ? fn / l : P3(0, 0, 0);
     }
 
-    // Worst quality(f, n) over `faces` now and with the `moved` nodes all at `at`; each face is
-    // rated against the input surface's normal under it, before and after. Positions are restored.
-    template <class Quality>
-    std::pair<double, double> WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces,
-                                                   Quality quality)
-    {
-        double before = 1e9, after = 1e9;
-        for (int f : faces) before = std::min(before, quality(f, InputFaceNormal(f)));
-        std::vector<P3> old;
-        for (int v : moved) old.push_back(pos[v]);
-        for (int v : moved) pos[v] = at;
-        for (int f : faces) after = std::min(after, quality(f, InputFaceNormal(f)));  // the surface under the new place
-        size_t k = 0;
-        for (int v : moved) pos[v] = old[k++];
-        return {before, after};
-    }
-
     // The faces around the given nodes, each once, but the `dying` ones (about to vanish).
     std::vector<int> FacesAround(std::initializer_list<int> nodes, std::initializer_list<int> dying = {}) const
     {
@@ -347,20 +310,6 @@ public:
                     faces.push_back(f);
             });
         return faces;
-    }
-
-    // Moves node v to `to` when no face around it folds (quality kMinMoveQuality) or gets worse than
-    // the worst one now or than kFairMoveQuality; quality(f, n) rates face f against the input
-    // surface's normal n under it (a face turned over on the surface is negative).
-    template <class Quality>
-    bool TryMoveNode(int v, const P3 &to, Quality quality)
-    {
-        const std::pair<double, double> worst = WorstQualityIfMoved({v}, to, FacesAround({v}), quality);
-        if (worst.second > kMinMoveQuality && worst.second >= std::min(worst.first, kFairMoveQuality)) {
-            pos[v] = to;
-            return true;
-        }
-        return false;
     }
 
     // ---- construction -------------------------------------------------------------------------

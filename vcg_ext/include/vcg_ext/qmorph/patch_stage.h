@@ -114,6 +114,8 @@ protected:
     // A quad below this scaled Jacobian is poor: operations must not make quads worse than this (or
     // than the worst they replace), and quads still below it have their nodes re-placed at the end.
     static constexpr double kFairQuad = 0.3;
+    // Node moves: no face around may fall to this quality (folded), nor below min(worst before, fair).
+    static constexpr double kMinMoveQuality = 1e-3, kFairMoveQuality = 0.2;
 
     // The input surface's normal under a polygon of nodes, present or planned: at its centroid.
     P3 InputNormalOf(std::initializer_list<int> corners) const
@@ -173,15 +175,35 @@ protected:
         return QuadShape(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]));
     }
 
-    // Moves node v to the input surface's point nearest `to` when no face around it folds, turns
-    // over on the surface or gets worse than its worst one (see TryMoveNode); its home follows.
+    // Worst FaceQualityAt over `faces` now and with the `moved` nodes all at `at`; each face is
+    // rated against the input surface's normal under it, before and after. Positions are restored.
+    std::pair<double, double> WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces)
+    {
+        double before = 1e9, after = 1e9;
+        for (int f : faces) before = std::min(before, FaceQualityAt(f, m.InputFaceNormal(f)));
+        std::vector<P3> old;
+        for (int v : moved) old.push_back(m.pos[v]);
+        for (int v : moved) m.pos[v] = at;
+        for (int f : faces) after = std::min(after, FaceQualityAt(f, m.InputFaceNormal(f)));  // the surface under the new place
+        size_t k = 0;
+        for (int v : moved) m.pos[v] = old[k++];
+        return {before, after};
+    }
+
+    // Moves node v to the input surface's point nearest `to` when no face around it folds (quality
+    // kMinMoveQuality), turns over on the surface or gets worse than the worst one now or than
+    // kFairMoveQuality; its home follows.
     bool TryMove(int v, const P3 &to)
     {
         int hm = home[v];
         const P3 at = proj.Project(to, hm);
         const int old = home[v];
         home[v] = hm;  // the faces are rated against the surface under the new place
-        if (m.TryMoveNode(v, at, [&](int f, const P3 &n) { return FaceQualityAt(f, n); })) return true;
+        const std::pair<double, double> worst = WorstQualityIfMoved({v}, at, m.FacesAround({v}));
+        if (worst.second > kMinMoveQuality && worst.second >= std::min(worst.first, kFairMoveQuality)) {
+            m.pos[v] = at;
+            return true;
+        }
         home[v] = old;
         return false;
     }

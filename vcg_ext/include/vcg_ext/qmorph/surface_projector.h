@@ -37,9 +37,23 @@ public:
             if (twin[h] >= 0) nb[h / 3][h % 3] = twin[h] / 3;
     }
 
-    // Unit normal of triangle t (zero for a degenerate one): the input surface's orientation, the
-    // reference every flip test of the working mesh is made against.
-    const P3 &Normal(int t) const { return normal[t]; }
+    // Unit normal of triangle t (zero for a degenerate one or no triangle): the input surface's
+    // orientation, the reference every flip test of the working mesh is made against.
+    P3 Normal(int t) const { return t >= 0 && t < int(normal.size()) ? normal[t] : P3(0, 0, 0); }
+    // Unit normal of the surface at `point`: of the triangle nearest it found by walking from each
+    // of `homes` (one walk can stop short on a strongly curved surface); (0, 0, 0) when none is valid.
+    P3 NormalAt(const P3 &point, const int *homes, int count) const
+    {
+        double best = -1;
+        int bestT = -1;
+        for (int i = 0; i < count; ++i) {
+            int t = homes[i];
+            if (t < 0 || t >= TriangleCount()) continue;
+            const double d = (Project(point, t) - point).SquaredNorm();
+            if (bestT < 0 || d < best) { best = d; bestT = t; }
+        }
+        return Normal(bestT);
+    }
     int TriangleCount() const { return int(tri.size()); }
 
     // Closest point to p found by walking from `home` (updated to the triangle of the result).

@@ -155,7 +155,7 @@ private:
         // the faces around a and c but f, with a and c at `at`
         const std::vector<int> faces = m.FacesAround({a, c}, {f});
         const std::pair<double, double> worst =
-            m.WorstQualityIfMoved({a, c}, at, faces, [&](int g, const P3 &n) { return FaceQualityAt(g, n); });
+            WorstQualityIfMoved({a, c}, at, faces);
         // the surface must not flatten: the old nodes stay near the new faces (as in quad formation)
         const P3 oldA = m.pos[a], oldC = m.pos[c];
         m.pos[a] = m.pos[c] = at;
