@@ -108,10 +108,15 @@ const TableDef &Def(int t)
          "time: PolylineEmbedding::Embed on the front layer as the plugin builds it (float coordinates, re-located)."},
         {"Filter 4 - Q-Morph (defaults) on the split mesh",
          {"mesh", "input faces", "time (ms)", "patches", "quads", "triangles", "quad % (area)", "quad % (count)",
-          "mean SJ", "min SJ", "quads < 0.3 %", "inverted", "irregular %", "failed front steps"},
+          "mean SJ", "min SJ", "quads < 0.3 %", "inverted", "irregular %", "failed front steps",
+          "flipped (core / independent, beside >90 deg creases)", "folded quads"},
          "quality measured on the polygon mesh read back from the output's faux edges (QuadQuality::FromFauxMesh + "
          "Measure); SJ = scaled Jacobian; irregular = interior all-quad vertices of valence != 4, over all such vertices; "
-         "failed front steps: Q-Morph front edges whose quad formation failed and was retried later (QMorph Result::ops.failures)."},
+         "failed front steps: Q-Morph front edges whose quad formation failed and was retried later (QMorph Result::ops.failures). "
+         "flipped: faces whose vector area points away from the input surface (core: Q-Morph's own report; independent: "
+         "the closest input triangle to the face's centroid by a vcg grid, tests/support FlippedFaces, with the faces whose "
+         "closest triangle borders a crease sharper than 90 degrees counted apart); folded: quads bent over 60 degrees "
+         "along both diagonals."},
         {"Whole pipeline - invariants",
          {"mesh", "pipeline time (ms)", "Hausdorff / diag %", "volume change %", "closed 2-manifold",
           "genus kept (chi in -> out)", "front kept", "peak memory (MiB)"},
@@ -225,7 +230,8 @@ void Usage()
         "  --cgal-iterations N Lloyd iterations in the CGAL comparison (default 20)\n"
         "  --no-fork           run everything in this process (a crash stops the benchmark)\n"
         "  --out FILE          also write the markdown report to FILE\n"
-        "  --remesh F          Q-Morph re-meshes each patch first to F x the mean edge length of its input\n"
+        "  --remesh F          Q-Morph re-meshes first to F x the mean edge length of its input\n"
+        "  --remesh-diag P     Q-Morph re-meshes first to P % of the bounding-box diagonal\n"
         "  --no-preserve       Q-Morph with 'Preserve initial front' off\n");
 }
 
@@ -278,6 +284,8 @@ struct PipelineRun {
 // Q-Morph options of the whole run (--remesh, --no-preserve); defaults otherwise.
 QM::Params gQMorphParams;
 double gRemeshFactor = 0;  // > 0: Q-Morph re-meshes to this times the mean edge length of its input
+double gRemeshDiagPercent = 0;  // > 0: Q-Morph re-meshes to this % of the bounding-box diagonal
+bool Remeshing() { return gRemeshFactor > 0 || gRemeshDiagPercent > 0; }
 
 double MeanEdgeLength(const TMesh &m)
 {
@@ -358,6 +366,10 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
     t0 = begin(3, "Q-Morph");
     QM::Params qp = gQMorphParams;
     if (gRemeshFactor > 0) qp.targetEdgeLength = gRemeshFactor * MeanEdgeLength(work);
+    if (gRemeshDiagPercent > 0) {
+        vcg::tri::UpdateBounding<TMesh>::Box(work);
+        qp.targetEdgeLength = gRemeshDiagPercent / 100 * work.bbox.Diag();
+    }
     r.qm = QM::Apply(work, qp);
     r.tQm = Since(t0);
     end(3);
@@ -611,6 +623,12 @@ void RunJob(const Job &job, const Options &o)
     std::vector<std::string> row = {label, Count(r.splitFaces), Ms(r.tQm), Count(r.qm.patches)};
     for (auto &c : QuadCells(q)) row.push_back(c);
     row.push_back(Count(r.qm.ops.failures));
+    {
+        vcg::tri::UpdateTopology<TMesh>::FaceFace(work);
+        const FlipCount flips = FlippedFaces(vcg_ext::QuadQuality::FromFauxMesh(work), input);
+        row.push_back(Fmt("%d / %d (+%d)", r.qm.quality.flippedFaces, flips.flipped, flips.ambiguous));
+        row.push_back(Count(flips.folded));
+    }
     Emit(T_QMORPH, row);
 
     const auto outCheck = vcg_ext::MeshChecks<TMesh>::Inspect(work);
@@ -621,9 +639,9 @@ void RunJob(const Job &job, const Options &o)
     long lost = 0;
     for (const PosEdge &x : frontBefore) lost += !std::binary_search(edgesAfter.begin(), edgesAfter.end(), x);
     // re-meshing cuts front edges into pieces: then each must be a chain of selected output edges
-    const long mismatches = gRemeshFactor > 0 ? FrontChainMismatches(frontBefore, selAfter) : 0;
-    if (gRemeshFactor > 0) lost = mismatches;
-    const bool frontKept = gRemeshFactor > 0 ? mismatches == 0 : lost == 0 && selAfter == frontBefore;
+    const long mismatches = Remeshing() ? FrontChainMismatches(frontBefore, selAfter) : 0;
+    if (Remeshing()) lost = mismatches;
+    const bool frontKept = Remeshing() ? mismatches == 0 : lost == 0 && selAfter == frontBefore;
     Progress(label, "Hausdorff distance");
     auto th = Clock::now();
     const double hd = Hausdorff(work, input) / diag;
@@ -643,8 +661,8 @@ void RunJob(const Job &job, const Options &o)
     Emit(T_CHECKS, {label, Ms(r.Total()), Fmt("%.3f", 100 * hd),
                     Fmt("%+.3f", volumeIn != 0 ? 100 * (volumeOut - volumeIn) / std::fabs(volumeIn) : 0.0), closedText,
                     YesNo(genusKept) + Fmt(" (%ld -> %ld)", eulerIn, qm.euler),
-                    frontKept ? (gRemeshFactor > 0 ? "yes (as chains)" : "yes")
-                              : gRemeshFactor > 0 ? Fmt("NO (%ld front edges not chains)", lost)
+                    frontKept ? (Remeshing() ? "yes (as chains)" : "yes")
+                              : Remeshing() ? Fmt("NO (%ld front edges not chains)", lost)
                                                   : Fmt("NO (%ld lost, selection %s)", lost, selAfter == frontBefore ? "same" : "changed"),
                     Fmt("%.0f", peakAll)});
     const double below = q.quads ? double(q.quadsBelow03) / q.quads : 0;
@@ -822,6 +840,7 @@ int main(int argc, char **argv)
         else if (a == "--no-fork") o.fork = false;
         else if (a == "--out") o.out = next();
         else if (a == "--remesh") gRemeshFactor = std::atof(next().c_str());
+        else if (a == "--remesh-diag") gRemeshDiagPercent = std::atof(next().c_str());
         else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
         else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "unknown option %s\n", a.c_str()); Usage(); return 2; }
         else o.names.push_back(a);
