@@ -75,6 +75,11 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
         mm.updateDataMask(MeshModel::MM_FACECOLOR);
         vcg_ext::RegionIds<CMeshO>::ColorFaces(mm.cm, r.faceRegion);
     }
+    // Segmented anyway, but the pipeline's later filters refuse it: say so at the first filter, with the fix.
+    if (!r.warning.empty())
+        Log(GLLogStream::WARNING, "%s: warning: %s (segmented anyway, but '%s' and '%s' refuse such a mesh)",
+            qUtf8Printable(name), r.warning.c_str(), qUtf8Printable(filterName(FP_SPLIT_ALONG_FRONT)),
+            qUtf8Printable(filterName(FP_QMORPH)));
     if (p.mode == VSA::FixedRegionCount && r.regions != p.maxRegions)
         Log("VSA: %d regions instead of %d (the mesh has %d faces and %d connected components)", r.regions,
             p.maxRegions, mm.cm.fn, r.components);
