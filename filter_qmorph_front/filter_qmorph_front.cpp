@@ -47,14 +47,21 @@ int QMorphFrontPlugin::getPreConditions(QAction *) const
     return MeshModel::MM_NONE;  // checked in applyFilter, with a message saying what is missing
 }
 
-// Precise post-conditions: MM_GEOMETRY_AND_TOPOLOGY_CHANGE would make the GUI reset the
-// rendering of layer 0 (face colours no longer shown).
+// Precise post-conditions: the GUI turns on the rendering attributes a filter declares as changed.
+// MM_GEOMETRY_AND_TOPOLOGY_CHANGE would reset the rendering of layer 0 (face colours no longer
+// shown), and MM_VERTNORMAL switches its shading to per-vertex (MeshLab 2020.09's
+// updatedRendAttsAccordingToPriorities drops face normals whenever vertex normals are updated).
 int QMorphFrontPlugin::postCondition(QAction *a) const
 {
     switch (ID(a)) {
     case FP_VSA_SEGMENT: return MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_SMOOTH_BOUNDARIES: return MeshModel::MM_NONE;  // adds a layer, the mesh is untouched
     case FP_SPLIT_ALONG_FRONT:
+        // No normal bit, so the shading stays as the user set it: splitting moves no vertex (the
+        // face and vertex normals keep their directions), and it adds vertices and faces whenever it
+        // changes the mesh, so the GUI re-sizes and refills every normal buffer it draws anyway.
+        return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER | MeshModel::MM_FACEVERT |
+               MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_QMORPH:
         return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER |
                MeshModel::MM_FACEVERT | MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY |
