@@ -18,16 +18,18 @@ QString QMorphFrontPlugin::filterName(FilterIDType filter) const
     return "unknown filter";
 }
 
+// Two or three sentences (what the filter does, reads and writes) and the paper; the long
+// explanations are in the README.
 QString QMorphFrontPlugin::filterInfo(FilterIDType filter) const
 {
-    const QString paper =
-        "<br><br>Pipeline after: <i>Transformation of a closed 3D triangular mesh to a quadrilateral mesh based "
-        "on feature edges</i> (VSA segmentation, boundary smoothing, triangle splitting, Q-Morph in 3D).";
+    const QString pipeline =
+        "<br>The pipeline: <b>\"Transformation of a closed 3D triangular mesh to a quadrilateral mesh based on feature "
+        "edges\"</b>; details of every step and parameter in the plugin's README.";
     switch (filter) {
-    case FP_VSA_SEGMENT: return vsaInfo() + paper;
-    case FP_SMOOTH_BOUNDARIES: return smoothInfo() + paper;
-    case FP_SPLIT_ALONG_FRONT: return splitInfo() + paper;
-    case FP_QMORPH: return qmorphInfo() + paper;
+    case FP_VSA_SEGMENT: return vsaInfo() + pipeline;
+    case FP_SMOOTH_BOUNDARIES: return smoothInfo() + pipeline;
+    case FP_SPLIT_ALONG_FRONT: return splitInfo() + "<br>Details of every step and parameter in the plugin's README.";
+    case FP_QMORPH: return qmorphInfo() + pipeline;
     }
     return "";
 }
