@@ -12,18 +12,12 @@ typedef vcg_ext::QMorph<CMeshO> QMorphCMeshO;
 
 QString QMorphFrontPlugin::qmorphInfo()
 {
-    return "Step 4 of the closed-mesh-to-quads pipeline. Turns the triangle mesh into a quad-dominant mesh by "
-           "Q-Morph, an advancing-front triangle-to-quad transformation, done directly on the 3D surface. The "
-           "initial front is the <b>selected face-edges</b> (from <i>Split Triangles along Front</i>, <i>Select "
-           "Crease Edges</i> or your own selection) plus the mesh boundary; they cut the surface into patches, each "
-           "meshed from its own boundary loops in rows of quads parallel to the front, with Owen's seams, "
-           "transition seams and transition splits. Initial front edges are never changed (the paper leaves a triangle "
-           "rather than applying a seam on them, see <i>Preserve initial front</i>); new nodes are smoothed in their "
-           "tangent plane and projected back onto the input surface, so nothing shrinks. Optionally each patch is "
-           "re-meshed isotropically first. "
-           "The result uses MeshLab's polygonal representation (a quad is two triangles sharing a faux edge): "
-           "view it with <i>Polygonal Modality</i> on, save it with <i>-m ff</i> in PLY, or write real quads with the "
-           "export path. Face quality (region id) is kept per patch."
+    return "Step 4 of the closed-mesh-to-quads pipeline: turns the triangle mesh into a quad-dominant mesh by Q-Morph, "
+           "advancing rows of quads on the 3D surface from the initial front, which is kept unchanged. Reads a "
+           "2-manifold, consistently oriented triangle mesh whose initial front is its <b>selected face-edges</b> "
+           "(from <i>Split Triangles along Front</i> or <i>Select Crease Edges</i>) plus its boundary; writes the quad "
+           "mesh in MeshLab's polygonal form (a quad is two triangles sharing a faux edge: turn <i>Polygonal "
+           "Modality</i> on), the face quality kept per patch, and optionally real quads to a file. "
            "<br><br>See: <i>S. Owen, M. Staten, S. Canann, S. Saigal</i>, <b>\"Q-Morph: an indirect approach to "
            "advancing front quad meshing\"</b>, IJNME 44:1317-1340, 1999.";
 }
@@ -33,34 +27,40 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList
     QMorphCMeshO::Params d;
     const float diag = md.mm() ? md.mm()->cm.bbox.Diag() : 1.f;
     par.addParam(RichBool("PreserveInitialFront", d.preserveInitialFront, "Preserve initial front",
-                          "On (the paper): where two front edges meet at a very small angle and one of them is an "
-                          "initial front edge, a triangle is left rather than a seam, so the quads along the front keep "
-                          "their alignment. Off: the seam joins the other node onto the front node. Initial front "
-                          "edges are never moved, split or removed either way."));
+                          "On/off. On (the paper): where two front edges meet at a very small angle and one of them is "
+                          "an initial front edge, a triangle is left rather than a seam, so the quads along the front "
+                          "keep their alignment. Off: the seam joins the other node onto the front node (fewer "
+                          "triangles). Initial front edges are never moved, split or removed either way."));
     par.addParam(RichBool("TangentSmoothing", d.smoothing, "Tangent-plane smoothing",
-                          "Smooth new nodes after each quad and the whole quad mesh at the end, moving nodes only in "
-                          "their tangent plane and projecting them back onto the input surface of their patch "
-                          "(no shrinkage). Initial-front nodes never move."));
+                          "On/off. On: new nodes are smoothed after each quad and the whole quad mesh at the end, "
+                          "moving only in their tangent plane and projected back onto the input surface (better "
+                          "shaped quads, no shrinkage). Off: nodes stay where the rows put them. Initial-front nodes "
+                          "never move."));
     par.addParam(RichInt("SmoothingIterations", d.smoothingIterations, "Final smoothing iterations",
-                         "Number of tangent-plane smoothing sweeps over the quad mesh at the end (0..100)."));
+                         "Number of tangent-plane smoothing sweeps (0 to 100) over the whole quad mesh at the end "
+                         "(when smoothing is on). More: more evenly shaped quads, a longer run; 0: none."));
     par.addParam(RichFloat("CreaseAngle", float(d.creaseAngleDeg), "Crease angle (deg)",
-                           "Edges whose two faces' normals differ by more than this angle are cut like front edges "
-                           "(they are not selected), so no quad folds over a sharp crease inside a patch (a VSA region "
-                           "may hold creases up to twice its threshold angle). 180 turns it off. In (0, 180]."));
+                           "In degrees, in (0, 180]: edges whose two faces' normals differ by more than this angle "
+                           "are cut like front edges (they are not selected), so no quad folds over a sharp crease "
+                           "inside a patch (a VSA region may hold creases up to twice its threshold angle). Smaller: "
+                           "more cuts, more patches; 180: off."));
     par.addParam(RichAbsPerc("TargetEdgeLength", float(d.targetEdgeLength), 0.f, diag, "Re-mesh first: target edge length",
-                             "Optional, beyond the paper: isotropic re-meshing of the mesh before Q-Morph (vcglib's "
-                             "split, collapse, flip and tangential relaxation on the input surface), so the quads start "
-                             "from well-shaped triangles of this size (absolute units, or % of the bounding-box "
-                             "diagonal). Front edges and sharp creases stay where they are, as chains of edges (long "
-                             "ones are cut at their midpoints). 0: off (the input triangles are used as they are)."));
+                             "A length in the mesh's units (or % of the bounding-box diagonal); 0: off, the input "
+                             "triangles are used as they are. Above 0 (beyond the paper): the mesh is first re-meshed "
+                             "isotropically (vcglib) to triangles of about this size, so the quads are about this size "
+                             "and well shaped whatever the input; the front and sharp creases stay where they are, as "
+                             "chains of selected edges (long ones cut at their midpoints). Smaller: more, smaller quads."));
     par.addParam(RichInt("RemeshIterations", d.remeshIterations, "Re-meshing iterations",
-                         "Rounds of split, collapse, flip and relaxation when re-meshing is on (1..50)."));
+                         "Number of rounds (1 to 50) of split, collapse, flip and relaxation when re-meshing is on. "
+                         "More: more uniform triangles before Q-Morph, a longer run."));
     par.addParam(RichBool("FrontEdgesLayer", true, "Front edges layer",
-                          "Refresh (or create) the edge-only layer '<mesh>_front_edges' showing the selected front "
-                          "edges: MeshLab 2020.09 does not draw selected face-edges."));
+                          "On/off. On: refresh (or create) the edge-only layer '<mesh>_front_edges' that shows the "
+                          "selected front edges (MeshLab 2020.09 does not draw selected face-edges). Off: no layer is "
+                          "touched."));
     par.addParam(RichSaveFile("ExportPath", "", ".obj", "Export quads to",
-                              "Optional: also write the result with real 4-vertex faces to this OBJ, OFF or PLY file "
-                              "(by extension). Empty: no export. meshlabserver cannot write polygons itself."));
+                              "A file path ending in .obj, .off or .ply; empty: no export. When set, the result is also "
+                              "written there with real 4-vertex faces (meshlabserver cannot write polygons itself); "
+                              "the mesh in MeshLab is the same either way."));
 }
 
 bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb)

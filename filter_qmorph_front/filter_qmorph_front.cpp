@@ -18,16 +18,18 @@ QString QMorphFrontPlugin::filterName(FilterIDType filter) const
     return "unknown filter";
 }
 
+// Two or three sentences (what the filter does, reads and writes) and the paper; the long
+// explanations are in the README.
 QString QMorphFrontPlugin::filterInfo(FilterIDType filter) const
 {
-    const QString paper =
-        "<br><br>Pipeline after: <i>Transformation of a closed 3D triangular mesh to a quadrilateral mesh based "
-        "on feature edges</i> (VSA segmentation, boundary smoothing, triangle splitting, Q-Morph in 3D).";
+    const QString pipeline =
+        "<br>The pipeline: <b>\"Transformation of a closed 3D triangular mesh to a quadrilateral mesh based on feature "
+        "edges\"</b>; details of every step and parameter in the plugin's README.";
     switch (filter) {
-    case FP_VSA_SEGMENT: return vsaInfo() + paper;
-    case FP_SMOOTH_BOUNDARIES: return smoothInfo() + paper;
-    case FP_SPLIT_ALONG_FRONT: return splitInfo() + paper;
-    case FP_QMORPH: return qmorphInfo() + paper;
+    case FP_VSA_SEGMENT: return vsaInfo() + pipeline;
+    case FP_SMOOTH_BOUNDARIES: return smoothInfo() + pipeline;
+    case FP_SPLIT_ALONG_FRONT: return splitInfo() + "<br>Details of every step and parameter in the plugin's README.";
+    case FP_QMORPH: return qmorphInfo() + pipeline;
     }
     return "";
 }
@@ -47,14 +49,21 @@ int QMorphFrontPlugin::getPreConditions(QAction *) const
     return MeshModel::MM_NONE;  // checked in applyFilter, with a message saying what is missing
 }
 
-// Precise post-conditions: MM_GEOMETRY_AND_TOPOLOGY_CHANGE would make the GUI reset the
-// rendering of layer 0 (face colours no longer shown).
+// Precise post-conditions: the GUI turns on the rendering attributes a filter declares as changed.
+// MM_GEOMETRY_AND_TOPOLOGY_CHANGE would reset the rendering of layer 0 (face colours no longer
+// shown), and MM_VERTNORMAL switches its shading to per-vertex (MeshLab 2020.09's
+// updatedRendAttsAccordingToPriorities drops face normals whenever vertex normals are updated).
 int QMorphFrontPlugin::postCondition(QAction *a) const
 {
     switch (ID(a)) {
     case FP_VSA_SEGMENT: return MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_SMOOTH_BOUNDARIES: return MeshModel::MM_NONE;  // adds a layer, the mesh is untouched
     case FP_SPLIT_ALONG_FRONT:
+        // No normal bit, so the shading stays as the user set it: splitting moves no vertex (the
+        // face and vertex normals keep their directions), and it adds vertices and faces whenever it
+        // changes the mesh, so the GUI re-sizes and refills every normal buffer it draws anyway.
+        return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER | MeshModel::MM_FACEVERT |
+               MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_QMORPH:
         return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER |
                MeshModel::MM_FACEVERT | MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY |

@@ -9,31 +9,12 @@ typedef vcg_ext::RegionBoundarySmoothing<CMeshO> Smoothing;
 
 QString QMorphFrontPlugin::smoothInfo()
 {
-    return "Step 2 of the closed-mesh-to-quads pipeline. Reads region ids from the <b>face quality</b> (integral "
-           "values, e.g. from <i>Segment by Variational Shape Approximation</i>), finds the boundary curves between "
-           "regions and straightens them geodesically. The mesh itself is not modified: the curves go to a new "
-           "edge-only layer <b>&lt;mesh&gt;_front</b> (replacing an earlier one; the mesh stays the current layer)."
-           "<br><br><b>Curves</b>: chains of edges between faces of different regions, from corner to corner. "
-           "<i>Corners</i> (vertices where three or more regions meet, where the boundary branches or a region "
-           "touches itself, or on the mesh border) never move; a closed loop is pinned at three points a third of "
-           "its length apart so it cannot shrink away."
-           "<br><b>Straightening</b> (Martinez, Velho, Carvalho 2005): every curve point lies on a mesh vertex or "
-           "inside a mesh edge. Each pass moves an edge point to where the straight line between its neighbours "
-           "crosses the edge (its two faces unfolded), replaces a vertex point by the crossings with the edges "
-           "around the vertex when one side of the curve has an angle sum below 180 degrees, and removes points "
-           "whose neighbours share a face. A move is made only if it shortens the curve and no curve crosses another "
-           "or itself, passes over a corner or changes the order of points along an edge, so the arrangement of the "
-           "regions is kept. After the passes, points closer to a vertex than the snap distance snap to it (or, "
-           "when the vertex is taken, stay at the snap distance)."
-           "<br><b>Output</b>: one layer vertex per distinct point (a corner shared by curves is one vertex), one "
-           "edge per pair of consecutive points (they always share a face of the mesh); loops are closed. Save it "
-           "with <i>meshlabserver -o front.obj -l 1</i> (OBJ line elements). OBJ keeps 6 decimals: a reader should "
-           "locate each point on its mesh edge by closest point within a small tolerance and project it onto that "
-           "edge, as <i>Split Triangles along Front</i> does."
-           "<br><b>Log</b>: curves, closed loops, corners, total length and jaggedness before and after. "
-           "Jaggedness = the sum over curve points of the absolute geodesic turning angle (in the unfolded faces; at a "
-           "vertex half the difference of the angle sums on the two sides) divided by the total length, in radians "
-           "per unit length: a staircase of mesh edges scores high, a straight curve 0."
+    return "Step 2 of the closed-mesh-to-quads pipeline: finds the curves between regions and straightens them "
+           "geodesically on the surface (corners fixed, no curve crossing another), then moves points near a vertex "
+           "onto it. Reads the region ids from the <b>face quality</b> (integral values, e.g. from <i>Segment by "
+           "Variational Shape Approximation</i>) and leaves the mesh unchanged; writes the curves to a new edge-only "
+           "layer <b>&lt;mesh&gt;_front</b> (replacing an earlier one), and their length and jaggedness before and "
+           "after to the log. "
            "<br><br>See: <i>D. Martinez, L. Velho, P. C. Carvalho</i>, <b>\"Computing geodesics on triangular "
            "meshes\"</b>, Computers &amp; Graphics 29(5), 2005, pp. 667-675.";
 }
@@ -42,19 +23,19 @@ void QMorphFrontPlugin::initSmoothParameters(MeshDocument &, RichParameterList &
 {
     Smoothing::Params d;
     par.addParam(RichInt("Iterations", d.iterations, "Iterations",
-                         "Straightening passes; each moves every curve point once (the paper: a few, for smooth "
-                         "rather than straight curves). More passes converge to locally shortest curves and stop "
-                         "early once nothing moves. 0 outputs the raw boundary (chains of mesh edges). 0 to 1000."));
+                         "Number of straightening passes (0 to 1000), each moving every curve point once. The paper "
+                         "uses a few, for smooth rather than straight curves; more passes approach locally shortest "
+                         "curves (they stop early once nothing moves); 0 outputs the raw, jaggy boundary (chains of "
+                         "mesh edges)."));
     par.addParam(RichFloat("SnapDistance", float(d.snapPercent), "Snap distance (% of edge length)",
-                           "A curve point inside an edge that is closer to one of the edge's vertices than this "
-                           "percentage of the edge length is moved onto that vertex, so splitting the mesh along the "
-                           "curves later makes no sliver triangles. Points of different curves on one edge also keep "
-                           "this distance. 0 to 45; the default 25% keeps every new vertex at least a quarter of an edge "
-                           "from the old ones (fewer slivers along the front: better quads next to it in Q-Morph)."));
+                           "In % of the length of the edge the point lies on (0 to 45): a curve point closer than "
+                           "this to one of the edge's vertices moves onto it, so splitting along the curves later makes "
+                           "no sliver triangles. Larger: fewer slivers along the front (better quads next to it), "
+                           "curves a little less straight; 0: no snapping."));
     par.addParam(RichInt("MinRegionFaces", d.minRegionFaces, "Minimum region size (faces)",
-                         "Regions with fewer faces are merged into the neighbouring region they share the longest "
-                         "boundary with before the curves are built, so tiny regions make no curves (the face quality "
-                         "is not changed). 0 keeps every region."));
+                         "In faces (count): a region with fewer faces is merged into the neighbour it shares the "
+                         "longest boundary with before the curves are built, so tiny regions make no curves (the face "
+                         "quality itself is not changed). 0 keeps every region."));
 }
 
 bool QMorphFrontPlugin::applySmooth(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb)

@@ -8,28 +8,15 @@ typedef vcg_ext::PolylineEmbedding<CMeshO> Embedding;
 
 QString QMorphFrontPlugin::splitInfo()
 {
-    return "Step 3 of the closed-mesh-to-quads pipeline. Re-triangulates the mesh so that every polyline of the "
-           "<b>polyline layer</b> (by default <i>&lt;mesh&gt;_front</i>, made by <i>Smooth Region Boundaries</i>) "
-           "becomes a chain of mesh edges, and <b>selects</b> those edges (face-edge selection on both faces of each "
-           "edge, as <i>Select Crease Edges</i> does; saved in the PLY face flags with <i>-m ff</i>)."
-           "<br><b>Locating</b>: each polyline point is located on the mesh by closest point; farther than the "
-           "locate tolerance from the surface is an error. Then, with tol the tolerance: a point whose closest "
-           "surface point is within tol of a vertex is that vertex; else within tol of an edge, it lies on that "
-           "edge (projected onto it; at the end vertex if the projection is within tol of it); else it lies inside "
-           "the face. Points are embedded where they are: no snapping."
-           "<br><b>Tracing</b>: a segment whose end points share no face (a user-drawn or loaded polyline) is "
-           "traced across the faces between them along the section of the surface by the plane through both "
-           "points that contains the average of their normals."
-           "<br><b>Splitting</b> (the paper's procedure): one new vertex per crossing point, shared by the two faces "
-           "of its edge; each crossed face becomes a looped vertex list (corners and points on its edges) split "
-           "along every segment; the remaining polygons are triangulated maximising the smallest angle."
-           "<br><b>Relabelling</b>: the front cuts the surface into patches (faces connected without crossing a "
-           "selected edge). Each patch gets the region id (face quality) covering most of its area before the "
-           "split, or a new id when a larger patch already has it, and its colour; so the region-id boundaries are "
-           "exactly the selected edges of a closed front. Earlier selected and faux face-edges are cleared."
-           "<br>The mesh must be 2-manifold and consistently oriented (it may have a border); it stays so, with "
-           "the same area. An edge-only layer <i>&lt;mesh&gt;_front_edges</i> shows the selected edges, which "
-           "MeshLab does not draw otherwise.";
+    return "Step 3 of the closed-mesh-to-quads pipeline: re-triangulates the mesh so that every polyline of the "
+           "<b>polyline layer</b> (by default <i>&lt;mesh&gt;_front</i>, from <i>Smooth Region Boundaries</i>) "
+           "becomes a chain of mesh edges, splitting each crossed face along it (one new vertex per crossing; area "
+           "and orientation kept). Reads a 2-manifold, consistently oriented triangle mesh and the polyline layer; "
+           "writes the re-triangulated mesh with those edges as <b>selected face-edges</b> (saved with <i>-m ff</i>), "
+           "the face quality relabelled per patch bounded by them, and the layer <i>&lt;mesh&gt;_front_edges</i> "
+           "showing them. "
+           "<br><br>See: <b>\"Transformation of a closed 3D triangular mesh to a quadrilateral mesh based on feature "
+           "edges\"</b> (its triangle splitting step).";
 }
 
 // Default polyline layer: '<current>_front' if there is one, else the next layer (else the first other one).
@@ -45,19 +32,20 @@ void QMorphFrontPlugin::initSplitParameters(MeshDocument &md, RichParameterList 
     if (def == nullptr) def = current;  // a single layer: applying refuses it with a message
     Embedding::Params d;
     par.addParam(RichMesh("PolylineLayer", def, def ? &md : nullptr, "Polyline layer",
-                          "The edge-only layer whose polylines become mesh edges: by default the layer "
-                          "'<mesh>_front' made by Smooth Region Boundaries. Any polyline whose points lie on the "
-                          "surface works (loaded or drawn); segments whose ends share no face are traced across the "
-                          "faces between them. In an .mlx script the value is the layer position (the front layer "
-                          "made by Smooth Region Boundaries after loading one mesh is 1)."));
+                          "A layer (no unit): the edge-only layer whose polylines become mesh edges, by default "
+                          "'<mesh>_front' from Smooth Region Boundaries. Any polyline whose points lie on the surface "
+                          "works (loaded or drawn); segments whose ends share no face are traced across the faces "
+                          "between them. In an .mlx script: the layer position (1 for the front layer after loading "
+                          "one mesh)."));
     par.addParam(RichFloat("LocateTolerance", float(d.locateTolerancePercent), "Locate tolerance (% of diagonal)",
-                           "A polyline point farther than this from the surface (in % of the mesh bounding-box "
-                           "diagonal) is an error. Points within this distance of a vertex are that vertex; within it "
-                           "of an edge, they lie on the edge. Large enough for points written with 6 decimals (OBJ) on "
-                           "meshes about 1 unit in size; raise it for smaller meshes. In (0, 10]."));
+                           "In % of the mesh bounding-box diagonal, in (0, 10]: a polyline point farther than this "
+                           "from the surface is an error; a point within it of a vertex is that vertex, within it of an "
+                           "edge lies on that edge. Larger: coarser polylines (e.g. points written with 6 decimals to an "
+                           "OBJ from a small mesh) are still found, but nearby points merge."));
     par.addParam(RichBool("FrontEdgesLayer", true, "Front edges layer",
-                          "Refresh (or create) the edge-only layer '<mesh>_front_edges' showing the selected front "
-                          "edges: MeshLab 2020.09 does not draw selected face-edges. Save it with -o x.obj -l <layer>."));
+                          "On/off. On: refresh (or create) the edge-only layer '<mesh>_front_edges' that shows the "
+                          "selected front edges (MeshLab 2020.09 does not draw selected face-edges). Off: no layer is "
+                          "touched; the selection is made either way."));
 }
 
 bool QMorphFrontPlugin::applySplit(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb)

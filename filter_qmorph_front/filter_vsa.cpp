@@ -9,12 +9,10 @@ typedef vcg_ext::VSASegmentation<CMeshO> VSA;
 
 QString QMorphFrontPlugin::vsaInfo()
 {
-    return "Step 1 of the closed-mesh-to-quads pipeline. Partitions the mesh into near-planar, edge-connected "
-           "regions by Variational Shape Approximation with the L<sup>2,1</sup> metric (Lloyd iterations of "
-           "flooding and proxy fitting). Starts from a few random seeds and adds a seed in every region whose faces "
-           "deviate from its proxy normal by more than the threshold angle, or reaches a fixed region count by "
-           "incremental seeding. The region id of each face is written to the <b>face quality</b> (0..K-1) and "
-           "faces are coloured by region."
+    return "Step 1 of the closed-mesh-to-quads pipeline: partitions the mesh into near-planar, edge-connected regions "
+           "by Variational Shape Approximation (L<sup>2,1</sup> metric, Lloyd iterations). Reads the triangle mesh "
+           "(vertices merged, faces consistently oriented); writes the region id of each face to the <b>face "
+           "quality</b> (0..K-1) and a colour per region. "
            "<br><br>See: <i>D. Cohen-Steiner, P. Alliez, M. Desbrun</i>, <b>\"Variational Shape Approximation\"</b>, "
            "ACM SIGGRAPH 2004, pp. 905-914.";
 }
@@ -25,27 +23,33 @@ void QMorphFrontPlugin::initVsaParameters(MeshModel &, RichParameterList &par)
     par.addParam(RichEnum("SeedingMode", d.mode,
                           QStringList() << "Split regions above the threshold angle" << "Fixed region count",
                           "Seeding mode",
-                          "How regions are seeded. <i>Split regions above the threshold angle</i> (the paper): start from "
-                          "the initial seeds and add a seed in every region whose faces deviate from the region's proxy "
-                          "normal by more than the threshold angle, until none does or <i>Max regions</i> is reached. "
-                          "<i>Fixed region count</i>: exactly <i>Max regions</i> regions, adding one seed at a time in the "
-                          "region of largest L2,1 error (incremental seeding, as CGAL does)."));
+                          "A choice (no unit) of how the regions are seeded. <i>Split regions above the threshold angle</i> "
+                          "(the paper): regions are added until no face deviates from its region's proxy normal by more "
+                          "than the threshold angle (or <i>Max regions</i> is reached): flat parts give few regions, "
+                          "curved parts many. <i>Fixed region count</i>: exactly <i>Max regions</i> regions, one seed at a "
+                          "time in the region of largest L2,1 error."));
     par.addParam(RichInt("InitialSeeds", d.initialSeeds, "Initial seeds",
-                         "Number of random seed faces to start from (the paper uses 2). Every connected component "
-                         "also gets a seed of its own."));
+                         "Number of random seed faces (count, at least 1) the first flooding starts from; every "
+                         "connected component also gets one. The paper uses 2; more seeds start with more, smaller "
+                         "regions (in threshold mode the angle decides the final count)."));
     par.addParam(RichFloat("ThresholdAngle", float(d.thresholdAngleDeg), "Threshold angle (deg)",
-                           "A region whose faces deviate from its proxy normal by more than this angle gets an extra "
-                           "seed (the paper: 60 degrees = pi/3). Must be in (0, 180)."));
+                           "In degrees, in (0, 180): a region with a face whose normal deviates from the region's proxy "
+                           "normal by more than this angle gets an extra seed (threshold mode). Smaller: more, flatter "
+                           "regions, hence more front curves and smaller patches. The paper: 60 degrees (pi/3)."));
     par.addParam(RichInt("MaxRegions", d.maxRegions, "Max regions",
-                         "Threshold mode: the largest number of regions seeding may reach. Fixed mode: the number of "
-                         "regions to make. At least 1."));
+                         "Number of regions (count, at least 1). Threshold mode: the most seeding may make (it stops "
+                         "there even if faces still exceed the angle). Fixed mode: exactly this many (fewer only on a "
+                         "mesh with fewer faces)."));
     par.addParam(RichInt("MaxIterations", d.maxIterations, "Max iterations",
-                         "Cap on the Lloyd iterations (flooding + proxy fitting) after each (re)seeding. They stop "
-                         "earlier when the L2,1 error drops by less than 0.01%. At least 1."));
+                         "Number of Lloyd iterations (flooding + proxy fitting; at least 1) at most after each "
+                         "(re)seeding; they stop earlier when the L2,1 error drops by less than 0.01%. More: lower "
+                         "error and smoother region boundaries, longer run."));
     par.addParam(RichInt("RandomSeed", int(d.randomSeed), "Random seed",
-                         "Seed of the random choice of the initial seed faces: the same seed gives the same regions."));
+                         "An integer (no unit) seeding the random choice of the initial seed faces: the same value "
+                         "gives the same regions, another value regions started elsewhere."));
     par.addParam(RichBool("ColorByRegion", true, "Colour faces by region",
-                          "Write a distinct face colour per region (the region id always goes to the face quality)."));
+                          "On/off. On: each region gets a distinct face colour (shown when the mesh is drawn with face "
+                          "colours). The region id always goes to the face quality."));
 }
 
 bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb)
@@ -75,6 +79,11 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
         mm.updateDataMask(MeshModel::MM_FACECOLOR);
         vcg_ext::RegionIds<CMeshO>::ColorFaces(mm.cm, r.faceRegion);
     }
+    // Segmented anyway, but the pipeline's later filters refuse it: say so at the first filter, with the fix.
+    if (!r.warning.empty())
+        Log(GLLogStream::WARNING, "%s: warning: %s (segmented anyway, but '%s' and '%s' refuse such a mesh)",
+            qUtf8Printable(name), r.warning.c_str(), qUtf8Printable(filterName(FP_SPLIT_ALONG_FRONT)),
+            qUtf8Printable(filterName(FP_QMORPH)));
     if (p.mode == VSA::FixedRegionCount && r.regions != p.maxRegions)
         Log("VSA: %d regions instead of %d (the mesh has %d faces and %d connected components)", r.regions,
             p.maxRegions, mm.cm.fn, r.components);

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <set>
 
+#include <common/ml_shared_data_context.h>
+
 #include "plugin_harness.h"
 #include "split_test_meshes.h"
 #include <vcg_ext/common/front_edges.h>
@@ -92,6 +94,23 @@ void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::st
     qmf_test::ExpectRefused(h, kSplit, par, expected);
 }
 void ExpectRefused(PluginHarness &h, const std::string &expected) { ExpectRefused(h, Defaults(h, kSplit), expected); }
+// What MeshLab 2020.09's GUI draws on the solid mesh after a filter (its
+// MainWindow::updateSharedContextDataAfterFilterExecution, in src/meshlab): the attributes to
+// refresh are the data-mask bits that changed plus the filter's postCondition, merged into what the
+// layer drew by libmeshlab-common's MLPoliciesStandAloneFunctions, the functions the GUI calls.
+MLRenderingData::RendAtts SolidAttributesAfter(PluginHarness &h, const QString &filter, const MLRenderingData::RendAtts &before)
+{
+    MeshModel *mm = h.doc.mm();
+    const int maskBefore = mm->dataMask();
+    FilterRun r = h.Apply(filter);
+    EXPECT_TRUE(r.ok) << r.error;
+    const int updated = (maskBefore ^ mm->dataMask()) | h.plugin.postCondition(h.Action(filter));
+    MLRenderingData::RendAtts changed, after;
+    MLPoliciesStandAloneFunctions::fromMeshModelMaskToMLRenderingAtts(updated, changed);
+    MLPoliciesStandAloneFunctions::updatedRendAttsAccordingToPriorities(MLRenderingData::PR_SOLID, changed, before, after);
+    MLPoliciesStandAloneFunctions::filterUselessUdpateAccordingToMeshMask(mm, after);
+    return after;
+}
 }  // namespace
 
 TEST(SplitPlugin, SplitsAlongTheFrontSelectsEdgesRelabelsAndAddsTheEdgeLayer)
@@ -343,4 +362,30 @@ TEST(SplitPlugin, FrontReadBackWithSixDecimalsGivesTheSameSplit)
     }
     EXPECT_EQ(exact.doc.mm()->cm.fn, rounded.doc.mm()->cm.fn);
     EXPECT_EQ(vcg_ext::FrontEdges<CMeshO>::Collect(exact.doc.mm()->cm), vcg_ext::FrontEdges<CMeshO>::Collect(rounded.doc.mm()->cm));
+}
+
+// After Split Triangles along Front the GUI keeps the mesh's shading (flat: face normals; smooth:
+// vertex normals) and shows the new patch colours.
+TEST(SplitPlugin, TheGuiKeepsTheShadingOfTheMesh)
+{
+    typedef MLRenderingData::ATT_NAMES A;
+    for (bool flat : {true, false}) {
+        PluginHarness h;
+        TMesh cube, poly;
+        MakeSectionedCube(h, cube, poly);
+        MLRenderingData::RendAtts shading;
+        shading[A::ATT_VERTPOSITION] = true;
+        shading[flat ? A::ATT_FACENORMAL : A::ATT_VERTNORMAL] = true;
+        const MLRenderingData::RendAtts after = SolidAttributesAfter(h, kSplit, shading);
+        EXPECT_EQ(after[A::ATT_FACENORMAL], flat) << (flat ? "flat" : "smooth") << " shading";
+        EXPECT_EQ(after[A::ATT_VERTNORMAL], !flat) << (flat ? "flat" : "smooth") << " shading";
+        EXPECT_TRUE(after[A::ATT_FACECOLOR]);
+        EXPECT_FALSE(after[A::ATT_VERTCOLOR]);
+    }
+    // The mechanism: declaring vertex normals changed turns flat shading into per-vertex shading.
+    MLRenderingData::RendAtts flat, changed, after;
+    flat[A::ATT_VERTPOSITION] = flat[A::ATT_FACENORMAL] = true;
+    MLPoliciesStandAloneFunctions::fromMeshModelMaskToMLRenderingAtts(MeshModel::MM_VERTNORMAL, changed);
+    MLPoliciesStandAloneFunctions::updatedRendAttsAccordingToPriorities(MLRenderingData::PR_SOLID, changed, flat, after);
+    EXPECT_TRUE(after[A::ATT_VERTNORMAL] && !after[A::ATT_FACENORMAL]);
 }

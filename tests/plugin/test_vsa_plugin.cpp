@@ -107,3 +107,54 @@ TEST(VsaPlugin, AcceptsOpenAndNonManifoldMeshes)
     ASSERT_TRUE(r.ok) << r.error;
     for (auto &f : h.doc.mm()->cm.face) EXPECT_GE(f.Q(), 0.f);
 }
+
+// At the first filter of the pipeline: unmerged vertices and inconsistent orientation are refused
+// with the MeshLab filter that fixes them (mesh untouched); a non-manifold mesh is segmented with a
+// warning in the log naming its fix (the later filters refuse it).
+TEST(VsaPlugin, NamesTheFixOfBadInputAtTheFirstFilter)
+{
+    TMesh cube;
+    MakeCube(cube, 3);
+    {
+        PluginHarness h;  // a triangle soup: every face with its own vertices
+        std::vector<vcg::Point3f> v;
+        std::vector<std::array<int, 3>> f;
+        for (auto &face : cube.face) {
+            f.push_back({int(v.size()), int(v.size()) + 1, int(v.size()) + 2});
+            for (int k = 0; k < 3; ++k) v.push_back(face.V(k)->P());
+        }
+        h.AddMesh(v, f);
+        ExpectRefused(h, h.Defaults(kVsa), "run 'Merge Close Vertices' first");
+    }
+    {
+        PluginHarness h;
+        MeshModel *mm = h.AddCopyOf(cube);
+        std::swap(mm->cm.face[3].V(0), mm->cm.face[3].V(1));
+        ExpectRefused(h, h.Defaults(kVsa), "run 'Re-Orient all faces coherentely' first");
+    }
+    {
+        PluginHarness h;  // a bow tie: a triangle hanging on one corner of the cube
+        std::vector<vcg::Point3f> v;
+        std::vector<std::array<int, 3>> f;
+        for (auto &x : cube.vert) v.push_back(x.P());
+        for (auto &x : cube.face)
+            f.push_back({int(vcg::tri::Index(cube, x.V(0))), int(vcg::tri::Index(cube, x.V(1))), int(vcg::tri::Index(cube, x.V(2)))});
+        const int corner = f[0][0];
+        v.push_back(v[corner] * 2);
+        v.push_back(v[corner] * 2 + vcg::Point3f(0.5f, 0, 0));
+        f.push_back({corner, int(v.size()) - 2, int(v.size()) - 1});
+        h.AddMesh(v, f);
+        FilterRun r = h.Apply(kVsa);
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_TRUE(r.Logged("Segment by Variational Shape Approximation: warning: the mesh is not 2-manifold"));
+        EXPECT_TRUE(r.Logged("run 'Repair non Manifold Vertices by splitting' first")) << r.log.front();
+    }
+    {
+        PluginHarness h;  // inward-pointing faces: valid, no warning
+        MeshModel *mm = h.AddCopyOf(cube);
+        for (auto &x : mm->cm.face) std::swap(x.V(1), x.V(2));
+        FilterRun r = h.Apply(kVsa);
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_FALSE(r.Logged("warning"));
+    }
+}

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <map>
 
 #include "test_mesh.h"
 #include <vcg_ext/mesh_checks.h>
@@ -79,4 +80,125 @@ TEST(MeshChecks, InconsistentOrientation)
     auto r = Checks::Inspect(m);
     EXPECT_EQ(r.inconsistentEdges, 1);
     EXPECT_FALSE(r.IsOriented());
+}
+
+namespace {
+// Every face with its own three vertices (positions kept): what an STL reader leaves unmerged.
+void MakeSoup(const TMesh &in, TMesh &out)
+{
+    std::vector<P3> v;
+    std::vector<std::array<int, 3>> f;
+    for (const auto &face : in.face) {
+        f.push_back({int(v.size()), int(v.size()) + 1, int(v.size()) + 2});
+        for (int k = 0; k < 3; ++k) v.push_back(face.cV(k)->cP());
+    }
+    Build(out, v, f);
+}
+bool Names(const std::string &message, const std::string &fix) { return message.find("'" + fix + "'") != std::string::npos; }
+}  // namespace
+
+TEST(MeshChecks, TriangleSoupNamesMergeCloseVertices)
+{
+    TMesh cube, soup;
+    MakeCube(cube, 2);
+    MakeSoup(cube, soup);
+    auto r = Checks::Inspect(soup);
+    EXPECT_TRUE(r.IsTriangleSoup());
+    EXPECT_EQ(r.duplicateVertices, 3 * r.faces);
+    EXPECT_EQ(r.First(vcg_ext::MeshCheckReport::Basic), vcg_ext::MeshCheckReport::DuplicateVertices);
+    EXPECT_NE(r.FirstProblem(false).find("triangle soup"), std::string::npos) << r.FirstProblem(false);
+    EXPECT_TRUE(Names(r.PipelineProblem(), "Merge Close Vertices")) << r.PipelineProblem();
+    EXPECT_FALSE(Checks::Inspect(cube).IsTriangleSoup());
+    EXPECT_EQ(Checks::Inspect(cube).duplicateVertices, 0);
+}
+
+TEST(MeshChecks, SurfaceCutOpenAlongDuplicateVertices)
+{
+    TMesh m;  // a 4 x 4 grid whose right half has its own copies of the vertices on x = 0.5
+    MakeGrid(m, 4);
+    std::vector<P3> v;
+    for (auto &x : m.vert) v.push_back(x.P());
+    std::vector<std::array<int, 3>> f;
+    std::map<int, int> copy;
+    for (auto &face : m.face) {
+        std::array<int, 3> t;
+        const float cx = (face.V(0)->P()[0] + face.V(1)->P()[0] + face.V(2)->P()[0]) / 3;
+        for (int k = 0; k < 3; ++k) {
+            int i = int(vcg::tri::Index(m, face.V(k)));
+            if (cx > 0.5f && v[i][0] == 0.5f) {
+                if (!copy.count(i)) { copy[i] = int(v.size()); v.push_back(v[i]); }
+                i = copy[i];
+            }
+            t[k] = i;
+        }
+        f.push_back(t);
+    }
+    TMesh cut;
+    Build(cut, v, f);
+    auto r = Checks::Inspect(cut);
+    EXPECT_EQ(r.duplicateVertices, 10);  // 5 vertices on the cut, twice
+    EXPECT_FALSE(r.IsTriangleSoup());
+    EXPECT_NE(r.PipelineProblem().find("10 duplicate vertices"), std::string::npos) << r.PipelineProblem();
+    EXPECT_TRUE(Names(r.PipelineProblem(), "Merge Close Vertices"));
+}
+
+TEST(MeshChecks, ClosedPartsTouchingAtAPointAreNotDuplicates)
+{
+    TMesh a, b;
+    MakeCube(a, 2);
+    MakeCube(b, 2);
+    for (auto &v : b.vert) v.P() += P3(2, 2, 2);  // corner (1,1,1) of both
+    vcg::tri::Append<TMesh, TMesh>::Mesh(a, b);
+    auto r = Checks::Inspect(a);
+    EXPECT_EQ(r.duplicateVertices, 0);
+    EXPECT_EQ(r.PipelineProblem(), "");
+}
+
+TEST(MeshChecks, EveryProblemNamesItsMeshLabFix)
+{
+    TMesh fin;  // a non-manifold edge also makes boundary edges: the fin is reported, not the border
+    Build(fin, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0), P3(0, -1, 0), P3(0, 0, 1)}, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    auto r = Checks::Inspect(fin);
+    EXPECT_TRUE(Names(r.FirstProblem(true), "Repair non Manifold Edges by removing faces")) << r.FirstProblem(true);
+    EXPECT_TRUE(Names(r.PipelineProblem(), "Repair non Manifold Edges by removing faces"));
+
+    TMesh bowtie;
+    Build(bowtie, {P3(0, 0, 0), P3(1, 0, 0), P3(1, 1, 0), P3(-1, 0, 0), P3(-1, -1, 0)}, {{0, 1, 2}, {0, 3, 4}});
+    r = Checks::Inspect(bowtie);
+    EXPECT_TRUE(Names(r.FirstProblem(true), "Repair non Manifold Vertices by splitting")) << r.FirstProblem(true);
+
+    TMesh twisted;
+    Build(twisted, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0), P3(0, -1, 0)}, {{0, 1, 2}, {0, 1, 3}});
+    r = Checks::Inspect(twisted);
+    EXPECT_TRUE(Names(r.PipelineProblem(), "Re-Orient all faces coherentely")) << r.PipelineProblem();
+    EXPECT_EQ(r.FirstProblem(false), "") << "orientation is not a basic requirement";
+
+    TMesh m;
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0), P3(2, 0, 0)}, {{0, 1, 2}, {0, 1, 3}});
+    EXPECT_TRUE(Names(Checks::Inspect(m).PipelineProblem(), "Remove Zero Area Faces"));
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0)}, {{0, 1, 2}, {1, 2, 0}});
+    EXPECT_TRUE(Names(Checks::Inspect(m).PipelineProblem(), "Remove Duplicate Faces"));
+}
+
+// Only exact degeneracy is a problem: a needle of tiny but non-zero area is a face like any other.
+TEST(MeshChecks, NeedleFacesAreNotDegenerate)
+{
+    TMesh m;
+    for (float h : {1e-3f, 1e-5f, 1e-6f}) {
+        Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0.5f, h, 0)}, {{0, 1, 2}});
+        EXPECT_EQ(Checks::Inspect(m).degenerateFaces, 0) << h;
+    }
+    Build(m, {P3(0, 0, 0), P3(1, 0, 0), P3(0.5f, 0, 0)}, {{0, 1, 2}});
+    EXPECT_EQ(Checks::Inspect(m).degenerateFaces, 1);
+}
+
+// A closed mesh whose faces all point inward is consistently oriented: valid input.
+TEST(MeshChecks, InwardOrientedMeshIsValid)
+{
+    TMesh m;
+    MakeCube(m, 3);
+    for (auto &f : m.face) std::swap(f.V(1), f.V(2));
+    auto r = Checks::Inspect(m);
+    EXPECT_TRUE(r.IsOriented());
+    EXPECT_EQ(r.FirstProblem(true), "");
 }

@@ -268,3 +268,54 @@ TEST(VSA, FandiskThresholdRegionsFollowTheShape)
     EXPECT_GE(r.regions, 6);
     EXPECT_LE(r.regions, 60);
 }
+
+// Unmerged vertices and inconsistent orientation are refused (the regions would be meaningless)
+// and the mesh is left as it was; what VSA can segment but the later filters refuse (non-manifold,
+// zero-area and duplicate faces) is segmented with a warning naming the fix; an inward-oriented
+// mesh is fine.
+TEST(VSA, InputProblemsAreRefusedOrWarnedWithTheirFix)
+{
+    TMesh cube;
+    MakeCube(cube, 3);
+    {
+        TMesh soup;  // every face with its own vertices
+        std::vector<P3> v;
+        std::vector<std::array<int, 3>> f;
+        for (auto &face : cube.face) {
+            f.push_back({int(v.size()), int(v.size()) + 1, int(v.size()) + 2});
+            for (int k = 0; k < 3; ++k) v.push_back(face.V(k)->P());
+        }
+        Build(soup, v, f);
+        for (auto &face : soup.face) face.Q() = -7;
+        VSA::Result r = VSA::Segment(soup, VSA::Params());
+        EXPECT_NE(r.error.find("triangle soup"), std::string::npos) << r.error;
+        EXPECT_NE(r.error.find("'Merge Close Vertices'"), std::string::npos) << r.error;
+        for (auto &face : soup.face) EXPECT_EQ(face.Q(), -7) << "the mesh must be left as it was";
+    }
+    {
+        TMesh m;
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, cube);
+        std::swap(m.face[5].V(1), m.face[5].V(2));  // one face flipped
+        VSA::Result r = VSA::Segment(m, VSA::Params());
+        EXPECT_NE(r.error.find("'Re-Orient all faces coherentely'"), std::string::npos) << r.error;
+    }
+    {
+        TMesh m;  // the cube with a fin on one of its edges
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, cube);
+        const int a = int(vcg::tri::Index(m, m.face[0].V(0))), b = int(vcg::tri::Index(m, m.face[0].V(1)));
+        auto vi = vcg::tri::Allocator<TMesh>::AddVertex(m, P3(3, 3, 3));
+        vcg::tri::Allocator<TMesh>::AddFace(m, &m.vert[a], &m.vert[b], &*vi);
+        VSA::Result r = VSA::Segment(m, VSA::Params());
+        EXPECT_EQ(r.error, "");
+        EXPECT_NE(r.warning.find("'Repair non Manifold Edges by removing faces'"), std::string::npos) << r.warning;
+        EXPECT_GT(r.regions, 0);
+    }
+    {
+        TMesh m;
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, cube);
+        for (auto &f : m.face) std::swap(f.V(1), f.V(2));  // every face inward
+        VSA::Result r = VSA::Segment(m, VSA::Params());
+        EXPECT_EQ(r.error, "");
+        EXPECT_EQ(r.warning, "");
+    }
+}

@@ -1,5 +1,6 @@
-// Topology and sanity checks shared by all filters: empty meshes, NaN coordinates, degenerate and
-// duplicate faces, boundary / non-manifold edges, non-manifold vertices, orientation, components.
+// Topology and sanity checks shared by all filters: empty meshes, NaN coordinates, unmerged
+// (duplicate) vertices, degenerate and duplicate faces, boundary / non-manifold edges, non-manifold
+// vertices, orientation, components. Every problem is reported with the MeshLab filter that fixes it.
 // Index based (sorting of edge keys), O(F log F), needs no adjacency and never modifies the mesh.
 #ifndef VCG_EXT_MESH_CHECKS_H
 #define VCG_EXT_MESH_CHECKS_H
@@ -21,6 +22,7 @@ struct MeshCheckReport {
     int vertices = 0;             // live vertices
     int faces = 0;                // live faces
     int nonFiniteVertices = 0;    // NaN or inf coordinates (referenced or not)
+    int duplicateVertices = 0;    // boundary vertices at exactly the position of another referenced vertex
     int degenerateFaces = 0;      // repeated vertex or zero area
     int duplicateFaces = 0;       // faces with the same vertex set as an earlier face
     int boundaryEdges = 0;        // edges with one face
@@ -36,23 +38,76 @@ struct MeshCheckReport {
     bool IsClosed() const { return boundaryEdges == 0; }
     bool IsTwoManifold() const { return nonManifoldEdges == 0 && nonManifoldVertices == 0; }
     bool IsOriented() const { return inconsistentEdges == 0; }
+    // No two faces share a vertex and some vertices coincide: vertices never merged (STL-like input).
+    bool IsTriangleSoup() const { return faces > 1 && referencedVertices == 3 * faces && duplicateVertices > 0; }
+
+    // The problems, in the order they are reported and should be fixed (each fix can reveal the
+    // next one: merging vertices can make zero-area or duplicate faces; MeshLab re-orients only a
+    // 2-manifold mesh; a non-manifold fin also makes boundary edges).
+    enum Problem {
+        NoProblem, Empty, NoFaces, NonFiniteVertices, DuplicateVertices, DegenerateFaces, DuplicateFaces,
+        NonManifoldEdges, NonManifoldVertices, Open, Inconsistent
+    };
+    // What is required beyond faces, finite coordinates, merged vertices and no degenerate or
+    // duplicate face (`Basic`).
+    enum Requirement { Basic, ManifoldOriented, ClosedManifoldOriented };
+
+    Problem First(Requirement need) const
+    {
+        if (faces == 0) return vertices == 0 ? Empty : NoFaces;
+        if (nonFiniteVertices) return NonFiniteVertices;
+        if (duplicateVertices) return DuplicateVertices;
+        if (degenerateFaces) return DegenerateFaces;
+        if (duplicateFaces) return DuplicateFaces;
+        if (need == Basic) return NoProblem;
+        if (nonManifoldEdges) return NonManifoldEdges;
+        if (nonManifoldVertices) return NonManifoldVertices;
+        if (boundaryEdges && need == ClosedManifoldOriented) return Open;
+        if (inconsistentEdges) return Inconsistent;
+        return NoProblem;
+    }
+
+    // The problem phrased for a user, naming the MeshLab filter that repairs it; "" for NoProblem.
+    std::string Describe(Problem p) const
+    {
+        auto n = [](int k) { return std::to_string(k); };
+        switch (p) {
+        case NoProblem: return "";
+        case Empty: return "the mesh is empty";
+        case NoFaces: return "the mesh has no faces (a point cloud)";
+        case NonFiniteVertices: return n(nonFiniteVertices) + " vertices have NaN or infinite coordinates";
+        case DuplicateVertices:
+            return (IsTriangleSoup() ? "the mesh is a triangle soup: none of its " + n(faces) + " faces shares a vertex with "
+                                       "another (" + n(duplicateVertices) + " vertices lie exactly on another vertex)"
+                                     : "the mesh has " + n(duplicateVertices) + " duplicate vertices (on its boundary, exactly "
+                                       "on another vertex: the surface is cut open there)") +
+                   "; run 'Merge Close Vertices' first";
+        case DegenerateFaces:
+            return n(degenerateFaces) + " faces are degenerate (zero area or a repeated vertex); run 'Remove Zero Area "
+                   "Faces' first";
+        case DuplicateFaces: return n(duplicateFaces) + " faces are duplicates; run 'Remove Duplicate Faces' first";
+        case NonManifoldEdges:
+            return "the mesh is not 2-manifold: " + n(nonManifoldEdges) + " edges have more than two faces; run 'Repair "
+                   "non Manifold Edges by removing faces' first";
+        case NonManifoldVertices:
+            return "the mesh is not 2-manifold: " + n(nonManifoldVertices) + " vertices are non-manifold; run 'Repair "
+                   "non Manifold Vertices by splitting' first";
+        case Open: return "the mesh is not closed: it has " + n(boundaryEdges) + " boundary edges";
+        case Inconsistent:
+            return "the mesh is not consistently oriented (" + n(inconsistentEdges) + " edges whose two faces disagree); "
+                   "run 'Re-Orient all faces coherentely' first";
+        }
+        return "";
+    }
 
     // The first problem, phrased for a user, or an empty string. `needClosedManifold` adds the
     // closed / 2-manifold / oriented requirements.
     std::string FirstProblem(bool needClosedManifold) const
     {
-        if (faces == 0) return vertices == 0 ? "the mesh is empty" : "the mesh has no faces (a point cloud)";
-        if (nonFiniteVertices) return std::to_string(nonFiniteVertices) + " vertices have NaN or infinite coordinates";
-        if (degenerateFaces) return std::to_string(degenerateFaces) + " faces are degenerate (zero area or a repeated vertex); "
-                                    "run 'Remove Zero Area Faces' / 'Remove Duplicate Vertices' first";
-        if (duplicateFaces) return std::to_string(duplicateFaces) + " faces are duplicates; run 'Remove Duplicate Faces' first";
-        if (!needClosedManifold) return "";
-        if (nonManifoldEdges) return "the mesh is not 2-manifold: " + std::to_string(nonManifoldEdges) + " edges have more than two faces";
-        if (nonManifoldVertices) return "the mesh is not 2-manifold: " + std::to_string(nonManifoldVertices) + " vertices are non-manifold";
-        if (boundaryEdges) return "the mesh is not closed: it has " + std::to_string(boundaryEdges) + " boundary edges";
-        if (inconsistentEdges) return "the mesh is not consistently oriented (" + std::to_string(inconsistentEdges) + " edges)";
-        return "";
+        return Describe(First(needClosedManifold ? ClosedManifoldOriented : Basic));
     }
+    // What Split Triangles along Front and Q-Morph need (open meshes are fine: the boundary is front).
+    std::string PipelineProblem() const { return Describe(First(ManifoldOriented)); }
 };
 
 template <class MeshType>
@@ -95,6 +150,7 @@ public:
             return 3 * f;
         };
         const EdgePairing::Groups edges = EdgePairing::Group(tris);
+        std::vector<char> onBoundary(m.vert.size(), 0);
         r.edges = edges.Count();
         for (int e = 0; e < edges.Count(); ++e) {
             const int n = edges.Size(e), *h = edges.Begin(e);
@@ -108,6 +164,7 @@ public:
                 cornerSet.Unite(corner(f, b), corner(g, b));
             }
             for (int k = 1; k < n; ++k) faceSet.Unite(h[0] / 3, h[k] / 3);
+            if (n == 1) onBoundary[EdgePairing::From(tris, h[0])] = onBoundary[EdgePairing::To(tris, h[0])] = 1;
         }
         for (size_t f = 0; f < tris.size(); ++f)
             if (faceSet.Find(int(f)) == int(f)) ++r.components;
@@ -122,7 +179,34 @@ public:
                 if (fanOf[v] < 0) { fanOf[v] = root; ++r.referencedVertices; }
                 else if (fanOf[v] != root && !bad[v]) { bad[v] = 1; ++r.nonManifoldVertices; }
             }
+        r.duplicateVertices = CountDuplicateBoundaryVertices(m, fanOf, onBoundary);
         return r;
+    }
+
+    // Boundary vertices whose position is exactly that of another referenced vertex: vertices that
+    // were never merged (a triangle soup, or a surface cut open along a seam). Coincident vertices
+    // away from the boundary (closed parts touching at a point) are not counted.
+    static int CountDuplicateBoundaryVertices(const MeshType &m, const std::vector<int> &referenced,
+                                              const std::vector<char> &onBoundary)
+    {
+        std::vector<int> ids;
+        for (size_t v = 0; v < m.vert.size(); ++v)
+            if (referenced[v] >= 0 && IsFinite(m.vert[v].cP())) ids.push_back(int(v));
+        auto less = [&](int a, int b) {
+            const auto &p = m.vert[a].cP(), &q = m.vert[b].cP();
+            if (p[0] != q[0]) return p[0] < q[0];
+            if (p[1] != q[1]) return p[1] < q[1];
+            if (p[2] != q[2]) return p[2] < q[2];
+            return a < b;
+        };
+        std::sort(ids.begin(), ids.end(), less);
+        int count = 0;
+        for (size_t i = 0, j = 0; i < ids.size(); i = j) {
+            for (j = i + 1; j < ids.size() && m.vert[ids[j]].cP() == m.vert[ids[i]].cP();) ++j;
+            if (j - i > 1)
+                for (size_t k = i; k < j; ++k) count += onBoundary[ids[k]] ? 1 : 0;
+        }
+        return count;
     }
 
     // The mesh has faces and no NaN or infinite coordinate, or the first of these problems: what

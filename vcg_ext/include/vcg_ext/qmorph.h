@@ -127,10 +127,8 @@ public:
     static std::string CheckInput(const MeshType &m)
     {
         MeshCheckReport r = MeshChecks<MeshType>::Inspect(m);
-        std::string why = r.FirstProblem(false);
+        std::string why = r.PipelineProblem();
         if (!why.empty()) return why;
-        if (!r.IsTwoManifold()) return r.FirstProblem(true);
-        if (!r.IsOriented()) return "the mesh is not consistently oriented (" + std::to_string(r.inconsistentEdges) + " edges)";
         if (r.IsClosed() && CountSelectedEdges(m) == 0)
             return "the mesh is closed and has no selected edges: there is no initial front. Run 'Split Triangles "
                    "along Front' (or 'Select Crease Edges') first";

@@ -67,6 +67,7 @@ public:
 
     struct Result {
         std::string error;             // empty on success
+        std::string warning;           // a problem segmented anyway that the later filters refuse (Check)
         std::vector<int> faceRegion;   // per face index (tri::Index), -1 for deleted faces
         std::vector<int> seedFace;     // per region: the face its last flooding started from
         std::vector<Vec> proxyNormal;  // per region
@@ -79,12 +80,24 @@ public:
         double seconds = 0;
     };
 
-    // Why `m` cannot be segmented with `p`, or "". Open, non-manifold and multi-component meshes
-    // are fine, and so are degenerate faces (they get a region without NaNs).
-    static std::string Check(const MeshType &m, const Params &p)
+    // Why `m` cannot be segmented with `p`, or "": the parameters, no faces, NaN coordinates, and
+    // what would make the regions meaningless: unmerged vertices (a triangle soup would make every
+    // face a component of its own) and an inconsistent orientation (the metric compares normals).
+    // Open, non-manifold and multi-component meshes are segmented, and so are degenerate and
+    // duplicate faces (zero-area faces get a region without NaNs); `warning` (when given) receives
+    // the first of these problems that the later filters of the pipeline refuse (non-manifold
+    // edges or vertices, degenerate or duplicate faces, in MeshCheckReport's order), or "".
+    static std::string Check(const MeshType &m, const Params &p, std::string *warning = nullptr)
     {
-        const std::string why = p.Validate();
-        return why.empty() ? MeshChecks<MeshType>::CheckFacesAndCoordinates(m) : why;
+        std::string why = p.Validate();
+        if (why.empty()) why = MeshChecks<MeshType>::CheckFacesAndCoordinates(m);
+        if (!why.empty()) return why;
+        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m);
+        const MeshCheckReport::Problem problem = report.First(MeshCheckReport::ManifoldOriented);
+        if (problem == MeshCheckReport::DuplicateVertices || problem == MeshCheckReport::Inconsistent)
+            return report.Describe(problem);
+        if (warning) *warning = report.Describe(problem);
+        return "";
     }
 
     // Segments `m` (after Check: on error it is left as it is); on success writes region ids to
@@ -93,7 +106,7 @@ public:
     {
         auto t0 = std::chrono::steady_clock::now();
         Result res;
-        res.error = Check(m, p);
+        res.error = Check(m, p, &res.warning);
         if (!res.error.empty()) return res;
         vcg::tri::RequireFFAdjacency(m);
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);

@@ -71,7 +71,8 @@ public:
             ++degree[t.edgeVerts[e][1]];
         }
         if (nonManifold) {
-            g.error = std::to_string(nonManifold) + " non-manifold edges (with more than two faces) lie on a region boundary";
+            g.error = std::to_string(nonManifold) + " non-manifold edges (with more than two faces) lie on a region boundary; "
+                      "run 'Repair non Manifold Edges by removing faces' first";
             return g;
         }
         // Boundary edges around each vertex (CSR over all vertices; empty for most).

@@ -101,16 +101,11 @@ private:
     std::vector<AlongEdge> along;                                  // segments along mesh edges
     std::vector<IdPair> front;
 
-    // The mesh must be a consistently oriented 2-manifold without degenerate or duplicate faces
-    // (open and multi-component meshes are fine).
+    // The mesh must be a consistently oriented 2-manifold with merged vertices and without degenerate
+    // or duplicate faces (open and multi-component meshes are fine).
     static std::string CheckMesh(const MeshType &m)
     {
-        const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m, true);
-        std::string why = report.FirstProblem(false);
-        if (why.empty() && !report.IsTwoManifold()) why = report.FirstProblem(true);
-        if (why.empty() && !report.IsOriented())
-            why = "the mesh is not consistently oriented (" + std::to_string(report.inconsistentEdges) + " edges)";
-        return why;
+        return MeshChecks<MeshType>::Inspect(m, true).PipelineProblem();
     }
 
     Result Fail(const std::string &why)
