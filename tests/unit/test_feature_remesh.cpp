@@ -1,0 +1,287 @@
+// Q-Morph with its re-meshing first (Params::targetEdgeLength > 0, qmorph/feature_remesh.h) on
+// CAD-style input: closed meshes made of long thin triangles (STL-like fans and strips), and
+// Debian's anchor. Every figure is measured independently of the product: the element count
+// against area / L^2, triangles left, faces flipped against a copy of the input (grid-based closest
+// triangle, quad_checks.h), the front as chains of selected output edges, topology, Hausdorff.
+// Last, the node-move guard of the Q-Morph stages (PatchStage::TryMove / SmoothNode) on a star
+// whose Laplacian target would turn faces over on the input surface.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "quad_checks.h"
+#include "test_mesh.h"
+#include <vcg_ext/mesh_checks.h>
+#include <vcg_ext/qmorph.h>
+#include <vcg_ext/qmorph/patch_stage.h>
+
+using namespace qmf_test;
+typedef vcg_ext::QMorph<TMesh> QM;
+
+namespace {
+
+// Longest edge over shortest altitude (an equilateral triangle: 2 / sqrt(3)).
+double AspectRatio(const TFace &f)
+{
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, double((f.cP((k + 1) % 3) - f.cP(k)).Norm()));
+    const double doubleArea = vcg::Norm((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0)));
+    return doubleArea > 0 ? longest * longest / doubleArea : 1e30;
+}
+
+// Fraction of the faces thinner than `ratio`, and the median aspect ratio.
+void SliverStats(const TMesh &m, double ratio, double &fraction, double &median)
+{
+    std::vector<double> a;
+    for (auto &f : m.face)
+        if (!f.IsD()) a.push_back(AspectRatio(f));
+    std::sort(a.begin(), a.end());
+    fraction = double(a.end() - std::upper_bound(a.begin(), a.end(), ratio)) / a.size();
+    median = a[a.size() / 2];
+}
+
+// Triangles of a convex closed mesh turned to face away from `centre` (outward).
+void BuildOutward(TMesh &m, const std::vector<P3> &v, std::vector<std::array<int, 3>> f, const P3 &centre)
+{
+    for (auto &t : f) {
+        const P3 n = (v[t[1]] - v[t[0]]) ^ (v[t[2]] - v[t[0]]);
+        if (n * ((v[t[0]] + v[t[1]] + v[t[2]]) / 3.f - centre) < 0) std::swap(t[1], t[2]);
+    }
+    Build(m, v, f);
+}
+
+// A CAD export of a box [0,a] x [0,b] x [0,b]: the 4 long edges (along x) cut into k pieces, each
+// long side one zigzag strip of k-wide, b-high slivers between them, the two square ends 2
+// triangles each.
+void MakeSliverBox(TMesh &m, float a, float b, int k)
+{
+    std::vector<P3> v;
+    const float yz[4][2] = {{0, 0}, {b, 0}, {b, b}, {0, b}};  // the 4 long edges, around the x axis
+    for (int e = 0; e < 4; ++e)
+        for (int i = 0; i <= k; ++i) v.push_back(P3(a * i / k, yz[e][0], yz[e][1]));
+    auto id = [k](int e, int i) { return (e % 4) * (k + 1) + i; };
+    std::vector<std::array<int, 3>> f;
+    for (int e = 0; e < 4; ++e)
+        for (int i = 0; i < k; ++i) {
+            f.push_back({id(e, i), id(e, i + 1), id(e + 1, i)});
+            f.push_back({id(e, i + 1), id(e + 1, i + 1), id(e + 1, i)});
+        }
+    for (int end : {0, k}) {
+        f.push_back({id(0, end), id(1, end), id(2, end)});
+        f.push_back({id(0, end), id(2, end), id(3, end)});
+    }
+    BuildOutward(m, v, f, P3(a / 2, b / 2, b / 2));
+}
+
+// A CAD export of a cylinder (axis z, radius r, height h, n slices): the side one strip of
+// full-height slivers, each cap a fan from one rim vertex (as STL writers triangulate a polygon).
+void MakeSliverCylinder(TMesh &m, float r, float h, int n)
+{
+    std::vector<P3> v;
+    for (int ring = 0; ring < 2; ++ring)
+        for (int i = 0; i < n; ++i) {
+            const double t = 2 * M_PI * i / n;
+            v.push_back(P3(float(r * std::cos(t)), float(r * std::sin(t)), ring ? h : 0.f));
+        }
+    std::vector<std::array<int, 3>> f;
+    for (int i = 0; i < n; ++i) {
+        const int j = (i + 1) % n;
+        f.push_back({i, j, n + j});
+        f.push_back({i, n + j, n + i});
+    }
+    for (int ring = 0; ring < 2; ++ring)
+        for (int i = 1; i + 1 < n; ++i) f.push_back({ring * n, ring * n + i, ring * n + i + 1});
+    BuildOutward(m, v, f, P3(0, 0, h / 2));
+}
+
+struct Figures {
+    int quads = 0, triangles = 0;
+    double elements = 0, expected = 0, triangleFraction = 0, hausdorff = 0;
+    int flipped = 0, ambiguous = 0, folded = 0;
+    long chainMismatches = 0;
+};
+
+// Q-Morph with re-meshing at target length L on `m` (its front: the selected face-edges), and the
+// checks every such run must pass: no error, element count (quads + triangles / 2) within 30% of
+// area / L^2, at most 2% triangles, no face flipped against the input, the front as chains of
+// selected output edges, a closed 2-manifold with the input's Euler characteristic. Prints the
+// figures.
+Figures RemeshAndCheck(TMesh &m, double L, const std::string &name)
+{
+    Figures fig;
+    TMesh input;  // taken before Apply: the reference surface of the independent checks
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+    const auto in = vcg_ext::MeshChecks<TMesh>::Inspect(input);
+    EXPECT_TRUE(in.IsClosed() && in.IsTwoManifold() && in.IsOriented()) << name << ": the input must be a clean closed mesh";
+    const std::vector<PosEdge> front = EdgesByPosition(input, true);
+    EXPECT_FALSE(front.empty());
+    const double area = TotalArea(input);
+
+    QM::Params p;
+    p.targetEdgeLength = L;
+    const QM::Result r = QM::Apply(m, p);
+    EXPECT_EQ(r.error, "") << name;
+    if (!r.error.empty()) return fig;
+
+    fig.quads = r.quads;
+    fig.triangles = r.triangles;
+    fig.elements = r.quads + 0.5 * r.triangles;
+    fig.expected = area / (L * L);
+    fig.triangleFraction = double(r.triangles) / std::max(1, r.quads + r.triangles);
+
+    const auto out = vcg_ext::MeshChecks<TMesh>::Inspect(m);
+    EXPECT_TRUE(out.IsClosed()) << name << ": " << out.boundaryEdges << " boundary edges";
+    EXPECT_EQ(out.nonManifoldEdges, 0) << name;
+    EXPECT_EQ(out.nonManifoldVertices, 0) << name;
+    EXPECT_TRUE(out.IsOriented()) << name;
+    EXPECT_EQ(out.degenerateFaces, 0) << name;
+    EXPECT_EQ(out.components, in.components) << name;
+
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    const vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
+    EXPECT_EQ(int(pm.faces.size()), r.quads + r.triangles) << name;
+    EXPECT_EQ(EulerCharacteristic(pm), long(in.EulerCharacteristic())) << name << ": the topology changed";
+    const FlipCount flips = FlippedFaces(pm, input);
+    fig.flipped = flips.flipped;
+    fig.ambiguous = flips.ambiguous;
+    fig.folded = flips.folded;
+    fig.chainMismatches = FrontChainMismatches(front, EdgesByPosition(m, true));
+    fig.hausdorff = Hausdorff(m, input) / input.bbox.Diag();
+
+    std::printf("%s: L %g, area / L^2 %.0f, quads %d, triangles %d, elements %.1f (%+.1f%%), triangles %.2f%% of the faces, "
+                "flipped %d (ambiguous %d), folded %d, front chain mismatches %ld, Hausdorff %.3f%% of the diagonal, "
+                "min SJ %.3f, mean SJ %.3f; %d -> %d triangles re-meshed, front %d -> %d edges\n",
+                name.c_str(), L, fig.expected, fig.quads, fig.triangles, fig.elements, 100 * (fig.elements / fig.expected - 1),
+                100 * fig.triangleFraction, fig.flipped, fig.ambiguous, fig.folded, fig.chainMismatches, 100 * fig.hausdorff,
+                r.quality.minJacobian, r.quality.meanJacobian, r.remesh.facesBefore, r.remesh.facesAfter,
+                r.remesh.frontEdgesBefore, r.remesh.frontEdgesAfter);
+
+    EXPECT_NEAR(fig.elements, fig.expected, 0.3 * fig.expected) << name << ": quads + triangles / 2 against area / L^2";
+    EXPECT_LE(fig.triangleFraction, 0.02) << name << ": " << r.triangles << " triangles of " << r.quads + r.triangles << " faces";
+    EXPECT_EQ(fig.flipped, 0) << name << ": faces upside down on the input surface";
+    EXPECT_EQ(fig.folded, 0) << name << ": quads folded across both diagonals";
+    EXPECT_EQ(r.quality.flippedFaces, 0) << name << ": the core's own count";
+    EXPECT_EQ(r.quality.invertedQuads, 0) << name;
+    EXPECT_EQ(fig.chainMismatches, 0) << name << ": the front is not exactly chains of selected output edges";
+    return fig;
+}
+
+}  // namespace
+
+// A 2 x 1 x 1 box whose long sides are strips of 1-high, 0.04-wide slivers (aspect ratio 25),
+// re-meshed at the front's own spacing.
+TEST(FeatureRemesh, SliverBoxBecomesQuads)
+{
+    TMesh m;
+    MakeSliverBox(m, 2.f, 1.f, 50);
+    double thin = 0, median = 0;
+    SliverStats(m, 20, thin, median);
+    ASSERT_GT(thin, 0.95) << "the test mesh must be made of slivers (median aspect ratio " << median << ")";
+    ASSERT_EQ(SelectCreases(m, 45), 4 * 50 + 8) << "the 12 box edges: 4 in 50 pieces, 8 whole";
+    RemeshAndCheck(m, 0.04, "sliver box");
+}
+
+// A cylinder (radius 1, height 3, 64 slices) exported CAD-style: full-height side slivers (aspect
+// ratio about 30) and caps fanned from one rim vertex; front: the two rims.
+TEST(FeatureRemesh, SliverCylinderBecomesQuads)
+{
+    TMesh m;
+    MakeSliverCylinder(m, 1.f, 3.f, 64);
+    double thin = 0, median = 0;
+    SliverStats(m, 20, thin, median);
+    ASSERT_GT(thin, 0.95) << "the test mesh must be made of slivers (median aspect ratio " << median << ")";
+    ASSERT_EQ(SelectCreases(m, 45), 2 * 64) << "the two rims";
+    RemeshAndCheck(m, 2 * M_PI / 64, "sliver cylinder");
+}
+
+// Debian's anchor (libcgal-demo, 1,050 triangles, genus 4): a coarse CAD mesh, its creases over 40
+// degrees selected as the front, re-meshed at 1% of its diagonal; it must also stay on its surface.
+TEST(FeatureRemesh, AnchorAtOnePercentOfItsDiagonal)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/anchor.off"));
+    ASSERT_GT(SelectCreases(m, 40), 100);
+    const Figures fig = RemeshAndCheck(m, 0.01 * m.bbox.Diag(), "anchor");
+    EXPECT_LE(fig.hausdorff, 0.005) << "Hausdorff distance to the input, fraction of the diagonal";
+}
+
+namespace {
+
+using vcg_ext::qmorph::MixedMesh;
+using vcg_ext::qmorph::PatchContext;
+using vcg_ext::qmorph::PatchParams;
+using vcg_ext::qmorph::PatchStage;
+typedef vcg_ext::SurfaceProjector::P3 D3;
+
+// The stages' move primitives, opened for the test.
+class MoveProbe : public PatchStage
+{
+public:
+    explicit MoveProbe(PatchContext &c) : PatchStage(c) {}
+    using PatchStage::SmoothNode;
+    using PatchStage::TryMove;
+};
+
+// Normal of the triangle of nodes (a b c) with node `v` put at `at`.
+D3 NormalWith(const MixedMesh &m, int a, int b, int c, int v, const D3 &at)
+{
+    auto p = [&](int x) { return x == v ? at : m.pos[x]; };
+    return (p(b) - p(a)) ^ (p(c) - p(a));
+}
+
+}  // namespace
+
+// A free node v at the origin of the plane z = 0, its star a polygon with a slit reaching in from
+// the right (tip at (0.5, 0)): v sees every edge, but the mean of its neighbours, (2.07, 0), lies in
+// the slit, where the two triangles at the tip turn over on the input surface. Laplacian smoothing
+// (SmoothNode) and a direct TryMove there must both be refused; a fair small move is accepted.
+TEST(FeatureRemesh, NodeMoveThatWouldTurnAFaceOverIsRefused)
+{
+    // the input surface: the plane z = 0 over [-2, 5] x [-2, 2], two triangles, normal +z
+    vcg_ext::SurfaceProjector surface;
+    surface.Build({D3(-2, -2, 0), D3(5, -2, 0), D3(5, 2, 0), D3(-2, 2, 0)}, {{{0, 1, 2}}, {{0, 2, 3}}});
+    // the working mesh on it: node 0 is v, 1..7 its star counter-clockwise
+    const std::vector<D3> pts{D3(0, 0, 0),  D3(-1, -1, 0), D3(4, -1, 0), D3(4, -0.5, 0),
+                              D3(0.5, 0, 0), D3(4, 0.5, 0), D3(4, 1, 0),  D3(-1, 1, 0)};
+    std::vector<std::array<int, 3>> tris;
+    for (int i = 1; i <= 7; ++i) tris.push_back({0, i, i % 7 + 1});
+    MixedMesh m;
+    m.Build(pts, tris);
+    ASSERT_FALSE(m.vertFixed[0]) << "v is inside the patch: free to move";
+    for (auto &t : tris) ASSERT_GT(NormalWith(m, t[0], t[1], t[2], -1, D3(0, 0, 0)) * D3(0, 0, 1), 0) << "the star starts well oriented";
+
+    std::vector<int> home;
+    PatchParams params;
+    PatchContext context(m, surface, home, params);
+    MoveProbe probe(context);
+
+    // Sanity: the Laplacian target, and that the unchecked move would turn the triangles at the slit's tip over.
+    D3 target(0, 0, 0);
+    for (int i = 1; i <= 7; ++i) target += pts[i];
+    target /= 7.0;
+    ASSERT_NEAR(target[0], 14.5 / 7, 1e-12);
+    ASSERT_NEAR(target[1], 0, 1e-12);
+    int turnedOver = 0;
+    for (auto &t : tris) turnedOver += NormalWith(m, t[0], t[1], t[2], 0, target) * surface.Normal(0) < 0;
+    ASSERT_EQ(turnedOver, 2) << "at the target, (v, (4, -0.5), tip) and (v, tip, (4, 0.5)) face down";
+
+    probe.SmoothNode(0);
+    EXPECT_EQ(m.pos[0], pts[0]) << "smoothing moved v to (" << m.pos[0][0] << ", " << m.pos[0][1] << ")";
+    EXPECT_FALSE(probe.TryMove(0, target)) << "the move to the Laplacian target must be refused";
+    EXPECT_EQ(m.pos[0], pts[0]);
+    EXPECT_FALSE(probe.TryMove(0, D3(1.0, 0.0, 0.3))) << "nor past the tip, from above the surface";
+    EXPECT_EQ(m.pos[0], pts[0]);
+    for (int f = 0; f < m.FaceCount(); ++f)
+        EXPECT_GT(m.FaceNormal(f) * surface.Normal(0), 0) << "face " << f << " is turned over on the input surface";
+
+    // The guard is not a blanket refusal: a small fair move (off the surface: projected back) is kept.
+    // (away from the tip, so the two thin triangles there get no worse than they are)
+    EXPECT_TRUE(probe.TryMove(0, D3(-0.2, 0, 0.2)));
+    EXPECT_NEAR(m.pos[0][0], -0.2, 1e-12);
+    EXPECT_NEAR(m.pos[0][1], 0, 1e-12);
+    EXPECT_NEAR(m.pos[0][2], 0, 1e-12) << "projected onto the input surface";
+}
