@@ -29,6 +29,7 @@
 #include <vcg/complex/algorithms/update/flag.h>
 
 #include <vcg_ext/common/format.h>
+#include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/qmorph/partition.h>
@@ -185,8 +186,10 @@ private:
     static void Run(MeshType &m, const Params &par, vcg::CallBackPos *cb, Result &res)
     {
         res.targetEdgeLength = par.targetEdgeLength;
-        if (par.targetEdgeLength > 0)
-            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, par.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
+        InputSurface<MeshType> input(m);  // the quality report's reference (and the re-meshing's)
+        if (par.targetEdgeLength > 0) {
+            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, par.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
+        }
         qmorph::FrontPartition part;
         part.Build(m, par.creaseAngleDeg);
         res.initialFrontEdges = part.frontEdges;
@@ -200,6 +203,8 @@ private:
             if (!in.hasFront) ++res.patchesWithoutFront;
             qmorph::MixedMesh mm;
             mm.Build(in.points, in.tris, in.cut);
+            if (par.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
+                mm.judge = [&input](const P3 &p, const P3 &own) { return input.NormalUnder(p, own); };
             mm.SetKeys(in.globalOf);
             SurfaceProjector surface;
             surface.Build(in.points, in.tris);
@@ -213,7 +218,8 @@ private:
         res.triangles = out.triangles;
         Progress(cb, 99, "Q-Morph: writing the quad mesh");
         out.WriteTo(m, part);
-        res.quality = QuadQuality::Measure(QuadQuality::FromFauxMesh(m), out.referenceNormals);
+        const PolygonMesh pm = QuadQuality::FromFauxMesh(m);
+        res.quality = QuadQuality::Measure(pm, input.NormalsUnder(pm, out.referenceNormals));
     }
 
     // The per-patch parameters (angles in radians) from the filter's.

@@ -12,6 +12,7 @@
 #include <array>
 #include <climits>
 #include <cmath>
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -60,6 +61,9 @@ public:
     std::vector<int> faceLevel;         // quads: the row they were made in
     const SurfaceProjector *input = nullptr;  // see SetInputSurface
     const std::vector<int> *home = nullptr;
+    // Optional: the normal under a point of the surface the mesh must finally agree with, given
+    // the patch's own (the input before re-meshing); used by the final judgements (exact).
+    std::function<P3(const P3 &, const P3 &)> judge;
 
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }
@@ -269,7 +273,9 @@ public:
             c += pos[Org(h)];
             homes[k] = HomeOf(Org(h));
         }
-        const P3 n = input ? input->NormalAt(c / double(faceSize[f]), homes, exact ? faceSize[f] : 1) : P3(0, 0, 0);
+        c /= double(faceSize[f]);
+        P3 n = input ? input->NormalAt(c, homes, exact ? faceSize[f] : 1) : P3(0, 0, 0);
+        if (exact && judge) n = judge(c, n);
         return n.SquaredNorm() > 0 ? n : UnitFaceNormal(f);
     }
 

@@ -171,6 +171,7 @@ protected:
     double FaceQualityAt(int f, const P3 &n) const
     {
         if (!m.IsQuad(f)) return m.TriangleQuality(f, n);
+        if (m.FaceNormal(f) * n <= 0) return -1;  // upside down against n (the judge's normal, when there is one)
         const int g = m.faceHe[f];
         return QuadShape(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]));
     }
