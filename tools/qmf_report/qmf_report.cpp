@@ -26,6 +26,8 @@
 #include <vcg_ext/quad_quality.h>
 
 #include "pictures.h"
+#include <vcg_ext/common/input_surface.h>
+
 #include "report_mesh.h"
 #include "report_tables.h"
 
@@ -119,13 +121,13 @@ void WriteJacobians(const std::string &path, const std::vector<double> &j)
 }
 
 // Quads read back from the real-quad export: the same counts and quality as the polygonal PLY?
-std::string CheckObj(const std::string &path, const vcg_ext::QuadQualityReport &ref)
+std::string CheckObj(const std::string &path, const vcg_ext::QuadQualityReport &ref, vcg_ext::InputSurface<RMesh> &surface)
 {
     if (path.empty()) return "not given";
     vcg_ext::PolygonMesh pm;
     std::string err = ReadObj(path, pm);
     if (!err.empty()) return err;
-    vcg_ext::QuadQualityReport r = vcg_ext::QuadQuality::Measure(pm);
+    vcg_ext::QuadQualityReport r = vcg_ext::QuadQuality::Measure(pm, surface.NormalsUnder(pm));
     std::string counts = Int(r.quads) + " quads, " + Int(r.triangles) + " triangles, " + Int(r.others) + " other";
     bool same = r.quads == ref.quads && r.triangles == ref.triangles && r.others == ref.others &&
                 r.irregularVertices == ref.irregularVertices && std::fabs(r.meanJacobian - ref.meanJacobian) < 1e-4;
@@ -181,15 +183,14 @@ int main(int argc, char **argv)
     vcg::tri::UpdateTopology<RMesh>::FaceFace(quads);
     const vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(quads);
     QuadFigures qf;
-    qf.q = vcg_ext::QuadQuality::Measure(pm);
+    vcg_ext::InputSurface<RMesh> surface(input);
+    qf.q = vcg_ext::QuadQuality::Measure(pm, surface.NormalsUnder(pm));  // against the input surface
     std::vector<double> jac = QuadJacobians(pm);
     if (!o.jacobians.empty()) WriteJacobians(o.jacobians, jac);
-    std::sort(jac.begin(), jac.end());
-    qf.jacobianP5 = Percentile(jac, 0.05);
     qf.vertices = long(pm.points.size());
     qf.topo = MeasureTopology(quads);
     qf.inputGenus = in.topo.Valid() ? in.topo.Genus() : -1;
-    qf.objCheck = CheckObj(o.quadsObj, qf.q);
+    qf.objCheck = CheckObj(o.quadsObj, qf.q, surface);
 
     // the initial front: selected face-edges of the split mesh, looked up among the output's edges
     std::map<EdgeKey, bool> outEdges;  // non-faux output edge -> still selected

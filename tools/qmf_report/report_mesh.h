@@ -34,7 +34,8 @@ struct RUsedTypes : public vcg::UsedTypes<vcg::Use<RVertex>::AsVertexType, vcg::
 class RVertex : public vcg::Vertex<RUsedTypes, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::BitFlags> {};
 class REdge : public vcg::Edge<RUsedTypes, vcg::edge::VertexRef, vcg::edge::BitFlags> {};
 class RFace : public vcg::Face<RUsedTypes, vcg::face::VertexRef, vcg::face::BitFlags, vcg::face::Normal3f,
-                               vcg::face::Qualityf, vcg::face::Color4b, vcg::face::FFAdj> {};
+                               vcg::face::Qualityf, vcg::face::Color4b, vcg::face::FFAdj,
+                               vcg::face::Mark> {};  // Mark: closest-point queries on the input
 class RMesh : public vcg::tri::TriMesh<std::vector<RVertex>, std::vector<REdge>, std::vector<RFace>> {};
 
 typedef vcg::Point3<double> P3d;

@@ -55,7 +55,6 @@ struct InputFigures {
 
 struct QuadFigures {
     vcg_ext::QuadQualityReport q;  // the core's report (QuadQuality::Measure)
-    double jacobianP5 = 0;         // 5th percentile of the per-quad scaled Jacobians
     long vertices = 0;
     Topology topo;                 // of the faux-edge triangle form
     long inputGenus = -1;          // -1: the input has no genus
@@ -112,11 +111,13 @@ inline std::vector<Row> QuadRows(const QuadFigures &f)
         {"vertices", Int(f.vertices)},
         {"quads by count", Pct(q.quadCountFraction)},
         {"area in quads", Pct(q.quadAreaFraction)},
-        {"scaled Jacobian min", Fmt("%.3f", q.minJacobian)},
+        {"scaled Jacobian min (against the input surface's normal)", Fmt("%.3f", q.minJacobian)},
         {"scaled Jacobian mean", Fmt("%.3f", q.meanJacobian)},
-        {"scaled Jacobian 5th percentile", Fmt("%.3f", f.jacobianP5)},
+        {"scaled Jacobian 5th percentile", Fmt("%.3f", q.p5Jacobian)},
         {"quads below 0.3", Int(q.quadsBelow03) + " (" + Ratio(q.quadsBelow03, q.quads) + ")"},
         {"inverted quads (scaled Jacobian <= 0)", Int(q.invertedQuads)},
+        {"flipped faces (upside down on the input surface)", Int(q.flippedFaces)},
+        {"folded quads (bent over 60 degrees along both diagonals)", Int(q.foldedQuads)},
         {"irregular vertices (valence != 4, inner all-quad vertices)",
          Int(q.irregularVertices) + " of " + Int(q.interiorAllQuadVertices) + " (" + Pct(q.IrregularFraction()) + ")"},
         {"front edges kept (output edges, still selected)",

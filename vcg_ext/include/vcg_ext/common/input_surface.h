@@ -66,15 +66,22 @@ public:
     }
 
     // Per face of pm: the unit normal of the input triangle closest to its corner centroid, or
-    // own[i] when that triangle borders a crease sharper than 90 degrees (own: empty, or per face).
+    // own[i] when that triangle borders a crease sharper than 90 degrees (own: per face, or empty
+    // for the face's own normal).
     std::vector<P3> NormalsUnder(const PolygonMesh &pm, const std::vector<P3> &own = std::vector<P3>())
     {
         std::vector<P3> normals;
         normals.reserve(pm.faces.size());
+        std::vector<P3> corners;
         for (const std::vector<int> &f : pm.faces) {
             P3 c(0, 0, 0);
-            for (int v : f) c += pm.points[v];
-            normals.push_back(NormalUnder(c / double(f.size()), own.size() == pm.faces.size() ? own[normals.size()] : P3(0, 0, 0)));
+            corners.clear();
+            for (int v : f) {
+                c += pm.points[v];
+                corners.push_back(pm.points[v]);
+            }
+            const P3 fallback = own.size() == pm.faces.size() ? own[normals.size()] : VectorArea(corners.data(), int(corners.size())).Normalize();
+            normals.push_back(NormalUnder(c / double(f.size()), fallback));
         }
         return normals;
     }
