@@ -232,6 +232,7 @@ void Usage()
         "  --out FILE          also write the markdown report to FILE\n"
         "  --remesh F          Q-Morph re-meshes first to F x the mean edge length of its input\n"
         "  --remesh-diag P     Q-Morph re-meshes first to P % of the bounding-box diagonal\n"
+        "  --no-cleanup, --no-smoothing  Q-Morph without its topological clean-up / tangent-plane smoothing\n"
         "  --no-preserve       Q-Morph with 'Preserve initial front' off\n");
 }
 
@@ -842,6 +843,8 @@ int main(int argc, char **argv)
         else if (a == "--remesh") gRemeshFactor = std::atof(next().c_str());
         else if (a == "--remesh-diag") gRemeshDiagPercent = std::atof(next().c_str());
         else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
+        else if (a == "--no-cleanup") gQMorphParams.cleanup = false;
+        else if (a == "--no-smoothing") gQMorphParams.smoothing = false;
         else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "unknown option %s\n", a.c_str()); Usage(); return 2; }
         else o.names.push_back(a);
     }
