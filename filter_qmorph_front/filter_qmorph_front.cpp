@@ -65,9 +65,11 @@ int QMorphFrontPlugin::postCondition(QAction *a) const
         return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER | MeshModel::MM_FACEVERT |
                MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_QMORPH:
+        // No normal bit either: every face is replaced and the vertex and face counts change (the
+        // same counts again would be a coincidence), so the GUI re-sizes and refills every buffer it
+        // draws, normals included (the filter ends with UpdateBoxAndNormals).
         return MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER | MeshModel::MM_FACENUMBER |
-               MeshModel::MM_FACEVERT | MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY |
-               MeshModel::MM_FACECOLOR | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
+               MeshModel::MM_FACEVERT | MeshModel::MM_FACEFLAG | MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     }
     return MeshModel::MM_ALL;
 }

@@ -75,6 +75,24 @@ TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
     EXPECT_EQ(vertices - int(uses.size()) + int(faces.size()), 2) << "a closed genus-0 quad mesh";
 }
 
+// After Q-Morph the GUI keeps the mesh's shading (flat: face normals, the natural view of quads;
+// smooth: vertex normals) and its region colours.
+TEST(QMorphPlugin, TheGuiKeepsTheShadingOfTheMesh)
+{
+    typedef MLRenderingData::ATT_NAMES A;
+    for (bool flat : {true, false}) {
+        PluginHarness h;
+        AddCubeWithCreasesSelected(h);
+        MLRenderingData::RendAtts shading;
+        shading[A::ATT_VERTPOSITION] = true;
+        shading[flat ? A::ATT_FACENORMAL : A::ATT_VERTNORMAL] = true;
+        const MLRenderingData::RendAtts after = SolidAttributesAfter(h, kQMorph, shading);
+        EXPECT_EQ(after[A::ATT_FACENORMAL], flat) << (flat ? "flat" : "smooth") << " shading";
+        EXPECT_EQ(after[A::ATT_VERTNORMAL], !flat) << (flat ? "flat" : "smooth") << " shading";
+        EXPECT_FALSE(after[A::ATT_VERTCOLOR]);
+    }
+}
+
 TEST(QMorphPlugin, RemeshingFirstCutsTheFrontIntoChainsOfTheTargetLength)
 {
     PluginHarness h;

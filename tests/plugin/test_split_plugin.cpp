@@ -5,8 +5,6 @@
 #include <fstream>
 #include <set>
 
-#include <common/ml_shared_data_context.h>
-
 #include "plugin_harness.h"
 #include "split_test_meshes.h"
 #include <vcg_ext/common/front_edges.h>
@@ -94,23 +92,6 @@ void ExpectRefused(PluginHarness &h, const RichParameterList &par, const std::st
     qmf_test::ExpectRefused(h, kSplit, par, expected);
 }
 void ExpectRefused(PluginHarness &h, const std::string &expected) { ExpectRefused(h, Defaults(h, kSplit), expected); }
-// What MeshLab 2020.09's GUI draws on the solid mesh after a filter (its
-// MainWindow::updateSharedContextDataAfterFilterExecution, in src/meshlab): the attributes to
-// refresh are the data-mask bits that changed plus the filter's postCondition, merged into what the
-// layer drew by libmeshlab-common's MLPoliciesStandAloneFunctions, the functions the GUI calls.
-MLRenderingData::RendAtts SolidAttributesAfter(PluginHarness &h, const QString &filter, const MLRenderingData::RendAtts &before)
-{
-    MeshModel *mm = h.doc.mm();
-    const int maskBefore = mm->dataMask();
-    FilterRun r = h.Apply(filter);
-    EXPECT_TRUE(r.ok) << r.error;
-    const int updated = (maskBefore ^ mm->dataMask()) | h.plugin.postCondition(h.Action(filter));
-    MLRenderingData::RendAtts changed, after;
-    MLPoliciesStandAloneFunctions::fromMeshModelMaskToMLRenderingAtts(updated, changed);
-    MLPoliciesStandAloneFunctions::updatedRendAttsAccordingToPriorities(MLRenderingData::PR_SOLID, changed, before, after);
-    MLPoliciesStandAloneFunctions::filterUselessUdpateAccordingToMeshMask(mm, after);
-    return after;
-}
 }  // namespace
 
 TEST(SplitPlugin, SplitsAlongTheFrontSelectsEdgesRelabelsAndAddsTheEdgeLayer)

@@ -12,6 +12,7 @@
 
 #include <common/GLLogStream.h>
 #include <common/meshmodel.h>
+#include <common/ml_shared_data_context.h>
 #include <filter_qmorph_front.h>
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <wrap/gl/glu_tesselator.h>  // import_off.h tessellates with GLU when GL is included
@@ -182,6 +183,24 @@ inline MeshModel *AddCubeWithCreasesSelected(PluginHarness &h)
         for (int k = 0; k < 3; ++k)
             if (vcg::Angle(f.N(), f.FFp(k)->N()) > M_PI / 4) f.SetFaceEdgeS(k);
     return mm;
+}
+
+// What MeshLab 2020.09's GUI draws on the solid mesh after a filter (its
+// MainWindow::updateSharedContextDataAfterFilterExecution, in src/meshlab): the attributes to
+// refresh are the data-mask bits that changed plus the filter's postCondition, merged into what the
+// layer drew by libmeshlab-common's MLPoliciesStandAloneFunctions, the functions the GUI calls.
+inline MLRenderingData::RendAtts SolidAttributesAfter(PluginHarness &h, const QString &filter, const MLRenderingData::RendAtts &before)
+{
+    MeshModel *mm = h.doc.mm();
+    const int maskBefore = mm->dataMask();
+    FilterRun r = h.Apply(filter);
+    EXPECT_TRUE(r.ok) << r.error;
+    const int updated = (maskBefore ^ mm->dataMask()) | h.plugin.postCondition(h.Action(filter));
+    MLRenderingData::RendAtts changed, after;
+    MLPoliciesStandAloneFunctions::fromMeshModelMaskToMLRenderingAtts(updated, changed);
+    MLPoliciesStandAloneFunctions::updatedRendAttsAccordingToPriorities(MLRenderingData::PR_SOLID, changed, before, after);
+    MLPoliciesStandAloneFunctions::filterUselessUdpateAccordingToMeshMask(mm, after);
+    return after;
 }
 
 }  // namespace qmf_test
