@@ -60,9 +60,8 @@ public:
     // sharper than 90 degrees (or there is none).
     P3 NormalUnder(const P3 &p, const P3 &own)
     {
-        CoordType closest;
-        const FaceType *near = Closest(CoordType::Construct(p), closest);
-        return !near || besideSharpCrease[vcg::tri::Index(mesh, near)] ? own : P3::Construct(near->cN());
+        const FaceType *near = UnambiguousClosest(p);
+        return near ? P3::Construct(near->cN()) : own;
     }
 
     // Per face of pm: the unit normal of the input triangle closest to its corner centroid, or
@@ -74,20 +73,31 @@ public:
         normals.reserve(pm.faces.size());
         std::vector<P3> corners;
         for (const std::vector<int> &f : pm.faces) {
-            P3 c(0, 0, 0);
             corners.clear();
+            P3 c(0, 0, 0);
             for (int v : f) {
                 c += pm.points[v];
                 corners.push_back(pm.points[v]);
             }
-            const P3 fallback = own.size() == pm.faces.size() ? own[normals.size()] : VectorArea(corners.data(), int(corners.size())).Normalize();
-            normals.push_back(NormalUnder(c / double(f.size()), fallback));
+            const FaceType *near = UnambiguousClosest(c / double(f.size()));
+            normals.push_back(near ? P3::Construct(near->cN())
+                                   : own.size() == pm.faces.size() ? own[normals.size()]
+                                                                   : VectorArea(corners.data(), int(corners.size())).Normalize());
         }
         return normals;
     }
 
 private:
     std::vector<char> besideSharpCrease;  // per input triangle
+
+    // The input triangle closest to p, or null when there is none or it borders a crease sharper
+    // than 90 degrees (where the closest one can lie on the other side).
+    const FaceType *UnambiguousClosest(const P3 &p)
+    {
+        CoordType closest;
+        const FaceType *near = Closest(CoordType::Construct(p), closest);
+        return near && !besideSharpCrease[vcg::tri::Index(mesh, near)] ? near : nullptr;
+    }
 
     // Optional per-face marks (MeshLab's CMeshO) are switched on; a mesh type with fixed ones has no switch.
     template <class Container>

@@ -96,11 +96,11 @@ private:
     // Tangential relaxation sweeps per round, and the worst triangle quality (vcg::Quality, 2 r / R
     // like, 1 equilateral) a relaxation move may leave when the star was better than that.
     static constexpr int kRelaxSweeps = 2;
+    static constexpr double kMinRelaxQuality = 0.1;
     // Split passes per round at most: each halves the long edges, and a CAD sliver can be many
     // times L long (joint at 0.5% of its diagonal: 0.47 of the expected count with one pass, 0.96
     // with three; twelve made the same count, 20% slower).
     static constexpr int kMaxSplitPasses = 3;
-    static constexpr double kMinRelaxQuality = 0.1;
 
     // Tangential relaxation (Botsch-Kobbelt): each vertex off the features moves toward the area-
     // weighted centroid of its star, in the tangent plane, then onto the input surface. A move is
@@ -117,6 +117,7 @@ private:
                     if (IsFeature(f, i) || f.FFp(i) == &f) fixed[vcg::tri::Index(m, f.V0(i))] = fixed[vcg::tri::Index(m, f.V1(i))] = 1;
         std::vector<FaceType *> star;
         std::vector<int> corner;
+        std::vector<CoordType> normalsBefore;
         for (VertexType &v : m.vert) {
             if (v.IsD() || fixed[vcg::tri::Index(m, &v)]) continue;
             vcg::face::VFStarVF<FaceType>(&v, star, corner);
@@ -139,7 +140,7 @@ private:
             if (!target) continue;
             const CoordType old = v.cP();
             double worstBefore = 1, worstAfter = 1;
-            std::vector<CoordType> normalsBefore;
+            normalsBefore.clear();
             for (FaceType *f : star) {
                 worstBefore = std::min(worstBefore, double(vcg::Quality(f->cP(0), f->cP(1), f->cP(2))));
                 normalsBefore.push_back(vcg::TriangleNormal(*f));
