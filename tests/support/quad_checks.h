@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -205,6 +206,67 @@ inline std::set<PosEdge> AllEdges(const TMesh &m)
 {
     const std::vector<PosEdge> e = EdgesByPosition(m, false);
     return std::set<PosEdge>(e.begin(), e.end());
+}
+
+// Distance from points to a set of segments (PosEdge), through a hash grid of the segments'
+// midpoints with the longest segment (or `reach`, if larger) as cell: linear in the sizes.
+class SegmentDistance
+{
+public:
+    typedef vcg::Point3d D3;
+    SegmentDistance(const std::vector<PosEdge> &segments, double reach) : seg(segments), cell(reach)
+    {
+        for (const PosEdge &e : seg) cell = std::max(cell, (End(e, 1) - End(e, 0)).Norm());
+        if (!(cell > 0)) cell = 1;
+        for (size_t i = 0; i < seg.size(); ++i) grid[Key((End(seg[i], 0) + End(seg[i], 1)) * 0.5)].push_back(int(i));
+    }
+    // Distance from q to the nearest segment, if within `reach` (else a larger value).
+    double operator()(const D3 &q) const
+    {
+        double best = std::numeric_limits<double>::max();
+        const std::array<long, 3> c = Key(q);
+        for (long dx = -2; dx <= 2; ++dx)
+            for (long dy = -2; dy <= 2; ++dy)
+                for (long dz = -2; dz <= 2; ++dz) {
+                    auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it == grid.end()) continue;
+                    for (int i : it->second) {
+                        const D3 p = End(seg[i], 0), d = End(seg[i], 1) - p;
+                        const double t = std::max(0.0, std::min(1.0, d.SquaredNorm() > 0 ? ((q - p) * d) / d.SquaredNorm() : 0.0));
+                        best = std::min(best, (p + d * t - q).Norm());
+                    }
+                }
+        return best;
+    }
+    static D3 End(const PosEdge &e, int k) { return D3(e[3 * k], e[3 * k + 1], e[3 * k + 2]); }
+
+private:
+    const std::vector<PosEdge> &seg;
+    double cell;
+    std::map<std::array<long, 3>, std::vector<int>> grid;
+    std::array<long, 3> Key(const D3 &p) const
+    {
+        return {long(std::floor(p[0] / cell)), long(std::floor(p[1] / cell)), long(std::floor(p[2] / cell))};
+    }
+};
+
+// The front as curves, where re-meshing may coarsen a front over smooth surface into chords: every
+// selected output edge has its endpoints on the input front (within `onCurve`) and its midpoint
+// within `chord` of it, and every input front edge's midpoint lies within `chord` of the output
+// front. Returns the edges that fail (0: every front curve is a chain of selected output edges
+// along the input's).
+inline long FrontCurveMismatches(const std::vector<PosEdge> &input, const std::vector<PosEdge> &output, double onCurve,
+                                 double chord)
+{
+    const SegmentDistance toInput(input, chord), toOutput(output, chord);
+    long bad = 0;
+    for (const PosEdge &o : output) {
+        const auto a = SegmentDistance::End(o, 0), b = SegmentDistance::End(o, 1);
+        bad += toInput(a) > onCurve || toInput(b) > onCurve || toInput((a + b) * 0.5) > chord;
+    }
+    for (const PosEdge &e : input)
+        bad += toOutput((SegmentDistance::End(e, 0) + SegmentDistance::End(e, 1)) * 0.5) > chord;
+    return bad;
 }
 
 // With re-meshing the front edges are cut into pieces: the selected output edges must lie on the

@@ -1,15 +1,15 @@
-// Isotropic re-meshing of the whole mesh before Q-Morph, with vcglib's IsotropicRemeshing (Botsch-
-// Kobbelt: split, collapse, flip toward valence 6, tangential relaxation, projection on the input),
+// Isotropic re-meshing of the whole mesh before Q-Morph (Botsch-Kobbelt: split, collapse, flip
+// toward valence 6, tangential relaxation, projection on the input), with vcglib's IsotropicRemeshing
+// for the splits and flips,
 // keeping the front (selected face-edges) and the sharp creases as exact chains of output edges.
 //
 // How the 2020.09 remesher is driven so that features stay where they are:
 // - features (front and unselected sharp creases) are its "user selected creases" (FaceEdgeS with
 //   userSelectedCreases): they are never flipped, their vertices never relaxed, and a split of a
 //   feature edge puts the new vertex at its midpoint, on the feature;
-// - its collapses may slide a feature vertex along a nearly straight feature and it has no fixed
-//   vertices (its collapse passes reset the vertex selection), so collapses run in a pass of their
-//   own with selectedOnly, on a face selection that leaves out every face touching a feature vertex:
-//   a vertex with an unselected face never moves in a collapse;
+// - its collapses are judged against the faces before, not the input, may slide a feature vertex
+//   along a nearly straight feature and never coarsen a feature (so a fine front kept rings of small
+//   triangles): ShortEdgeCollapse instead, which coarsens feature chains along their curve;
 // - its smoothing can turn faces over: a relaxation of our own, checked against the input, instead;
 // - no clean-up pass (it would delete and compact faces with its own rules).
 // Afterwards the front is re-selected: an output edge is front when the original edge it lies on
@@ -29,6 +29,7 @@
 
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/segment_grid.h>
+#include <vcg_ext/qmorph/short_edge_collapse.h>
 
 namespace vcg_ext {
 namespace qmorph {
@@ -65,6 +66,11 @@ public:
         SegmentGrid features(L);
         std::vector<char> isFront;
         MarkFeatures(m, creaseAngleDeg, features, isFront, st);
+        auto isFrontEdge = [&](const P3 &a, const P3 &b) {
+            double d;
+            const int id = features.Nearest((a + b) * 0.5, d);
+            return id >= 0 && isFront[id];
+        };
 
         typename Remesher::Params p;
         p.SetTargetLen(ScalarType(L));
@@ -76,11 +82,9 @@ public:
         for (int it = 0; it < iterations; ++it) {
             if (cb) cb(100 * it / iterations, "Q-Morph: re-meshing");
             // split toward no edge longer than 4/3 L (see kMaxSplitPasses)
-            for (int pass = 0; pass < kMaxSplitPasses && Pass(m, surface.mesh, p, st, true, false, false) > 0; ++pass) {}
-            SelectFacesAwayFromFeatures(m);
-            Pass(m, surface.mesh, p, st, false, true, false);  // collapse, features and their faces fixed
-            vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
-            Pass(m, surface.mesh, p, st, false, false, true);  // flip toward valence 6
+            for (int pass = 0; pass < kMaxSplitPasses && Pass(m, surface.mesh, p, st, true, false) > 0; ++pass) {}
+            st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, isFrontEdge);
+            Pass(m, surface.mesh, p, st, false, true);  // flip toward valence 6
             for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface);
         }
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
@@ -157,16 +161,15 @@ private:
     }
 
     // One vcglib pass; returns how many edges it split.
-    static int Pass(MeshType &m, MeshType &surface, typename Remesher::Params &p, Stats &st, bool split, bool collapse, bool flip)
+    static int Pass(MeshType &m, MeshType &surface, typename Remesher::Params &p, Stats &st, bool split, bool flip)
     {
         p.splitFlag = split;
-        p.collapseFlag = collapse;
-        p.selectedOnly = collapse;
+        p.collapseFlag = false;
+        p.selectedOnly = false;
         p.swapFlag = flip;
         p.smoothFlag = p.projectFlag = false;  // Relax instead: vcglib's smoothing can turn faces over
         Remesher::Do(m, surface, p);
         st.splits += p.stat.splitNum;
-        st.collapses += p.stat.collapseNum;
         st.flips += p.stat.flipNum;
         return p.stat.splitNum;
     }
@@ -201,29 +204,6 @@ private:
                 ++st.featureEdges;
                 st.frontEdgesBefore += selected;
             }
-    }
-
-    // Faces with no feature vertex: the only ones whose vertices a collapse may move (a vertex with
-    // an unselected face never moves in a collapse). Sparing some faces next to the features lets
-    // more collapses through, but then the coarser surface leaves thin parts of the input: faces
-    // flipped against it (feline at 1% of the diagonal: 19 instead of 5).
-    static void SelectFacesAwayFromFeatures(MeshType &m)
-    {
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
-        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
-        for (FaceType &f : m.face)
-            if (!f.IsD())
-                for (int i = 0; i < 3; ++i)
-                    if (IsFeature(f, i)) {
-                        f.V0(i)->SetS();
-                        f.V1(i)->SetS();
-                    }
-        for (FaceType &f : m.face)
-            if (!f.IsD()) {
-                if (f.V(0)->IsS() || f.V(1)->IsS() || f.V(2)->IsS()) f.ClearS();
-                else f.SetS();
-            }
-        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
     }
 
     // Every flagged output edge lies on one original feature edge: front when that one was.
