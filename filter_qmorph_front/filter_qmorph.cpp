@@ -44,12 +44,16 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList
                            "are cut like front edges (they are not selected), so no quad folds over a sharp crease "
                            "inside a patch (a VSA region may hold creases up to twice its threshold angle). Smaller: "
                            "more cuts, more patches; 180: off."));
-    par.addParam(RichAbsPerc("TargetEdgeLength", float(d.targetEdgeLength), 0.f, diag, "Re-mesh first: target edge length",
-                             "A length in the mesh's units (or % of the bounding-box diagonal); 0: off, the input "
-                             "triangles are used as they are. Above 0 (beyond the paper): the mesh is first re-meshed "
-                             "isotropically (vcglib) to triangles of about this size, so the quads are about this size "
-                             "and well shaped whatever the input; the front and sharp creases stay where they are, as "
-                             "chains of selected edges (long ones cut at their midpoints). Smaller: more, smaller quads."));
+    par.addParam(RichBool("RemeshFirst", true, "Re-mesh first",
+                          "On/off. On (beyond the paper): the mesh is first re-meshed isotropically to triangles of "
+                          "the target edge length, so the quads are well shaped whatever the input's triangles (CAD "
+                          "slivers, uneven scans); sharp creases stay exact chains of edges, the front stays a chain "
+                          "of selected edges on its curve. Off: the input triangles are used as they are."));
+    par.addParam(RichAbsPerc("TargetEdgeLength", 0.f, 0.f, diag, "Target edge length",
+                             "A length in the mesh's units (or % of the bounding-box diagonal) for the re-meshing; 0: "
+                             "automatic, the side of equilateral triangles tiling the surface in as many triangles as "
+                             "the input (at most 250,000), and at most 1% of the diagonal. Used when 'Re-mesh first' "
+                             "is on. Smaller: more, smaller quads."));
     par.addParam(RichInt("RemeshIterations", d.remeshIterations, "Re-meshing iterations",
                          "Number of rounds (1 to 50) of split, collapse, flip and relaxation when re-meshing is on. "
                          "More: more uniform triangles before Q-Morph, a longer run."));
@@ -72,7 +76,8 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     p.smoothing = par.getBool("TangentSmoothing");
     p.smoothingIterations = par.getInt("SmoothingIterations");
     p.creaseAngleDeg = par.getFloat("CreaseAngle");
-    p.targetEdgeLength = par.getAbsPerc("TargetEdgeLength");
+    p.remeshFirst = par.getBool("RemeshFirst");
+    p.targetEdgeLength = p.remeshFirst ? par.getAbsPerc("TargetEdgeLength") : 0;
     p.remeshIterations = par.getInt("RemeshIterations");
     const QString exportPath = par.getSaveFileName("ExportPath").trimmed();
     if (!exportPath.isEmpty()) {
@@ -87,7 +92,7 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     // needs face-face adjacency, enabled here and dropped again on error.
     // (re-meshing: vertex-face adjacency and marks too).
     const int remeshing = MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK | MeshModel::MM_FACEMARK;
-    const int needed = MeshModel::MM_FACEFACETOPO | (p.targetEdgeLength > 0 ? remeshing : 0);
+    const int needed = MeshModel::MM_FACEFACETOPO | (QMorphCMeshO::RemeshLength(mm.cm, p) > 0 ? remeshing : 0);
     const int missing = needed & ~mm.dataMask();
     mm.updateDataMask(needed);
     QMorphCMeshO::Result r = QMorphCMeshO::Apply(mm.cm, p, cb);

@@ -40,6 +40,7 @@ TEST(QMorphPlugin, CubeBecomesPolygonalQuadsWithTheFrontSelected)
     const int selected = CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS);
     ASSERT_EQ(selected, 2 * 12 * 4);
     RichParameterList par = h.Defaults(kQMorph);
+    par.setValue("RemeshFirst", BoolValue(false));  // Q-Morph on the cube's own 192 triangles
     const std::string exportPath = std::string(QMF_TEST_WORK_DIR) + "/qmorph_plugin_cube.obj";
     std::remove(exportPath.c_str());
     par.setValue("ExportPath", FileValue(QString::fromStdString(exportPath)));
@@ -124,7 +125,9 @@ TEST(QMorphPlugin, OpenMeshUsesItsBoundaryAsFront)
     TMesh t;
     MakeGrid(t, 6);
     h.AddCopyOf(t);
-    FilterRun r = h.Apply(kQMorph);
+    RichParameterList par = h.Defaults(kQMorph);
+    par.setValue("RemeshFirst", BoolValue(false));  // the grid's own triangles: 36 quads exactly
+    FilterRun r = h.Apply(kQMorph, par);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_TRUE(r.Logged("36 quads, 0 triangles left"));
     EXPECT_EQ(CountFaceEdges(h.doc.mm()->cm, &CFaceO::IsFaceEdgeS), 0) << "nothing was selected, nothing is";
@@ -195,9 +198,14 @@ TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
     }
 }
 
-// Filters 1-4 with their defaults on a Debian-package mesh; remeshFactor > 0: Q-Morph re-meshes
-// first, to that times the mean edge length of the split mesh. Checks the output contract.
-static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0, bool preserveFront = true, int *trianglesLeft = nullptr)
+// Q-Morph's re-meshing in RunWholePipeline: off (the split mesh's own triangles), the default
+// (automatic length), or a factor > 0 times the split mesh's mean edge length.
+constexpr double kInputTriangles = -1, kAutomaticLength = 0;
+
+// Filters 1-4 with their defaults on a Debian-package mesh, Q-Morph's re-meshing as remeshFactor
+// says. Checks the output contract.
+static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAutomaticLength, bool preserveFront = true,
+                             int *trianglesLeft = nullptr)
 {
     PluginHarness h;
     ASSERT_NE(h.LoadOff(MeshDir() + "/" + mesh + ".off"), nullptr);
@@ -211,6 +219,7 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0, b
     h.doc.setCurrentMesh(mm->id());
     const int selected = CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS);
     RichParameterList par = h.Defaults(kQMorph);
+    if (remeshFactor == kInputTriangles) par.setValue("RemeshFirst", BoolValue(false));
     if (remeshFactor > 0) {
         double sum = 0;
         for (auto &f : mm->cm.face)
@@ -239,14 +248,17 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0, b
     // the log tells what the independent check sees (next to >90 degree creases either may judge)
     EXPECT_GE(loggedFlipped, flips.flipped);
     EXPECT_LE(loggedFlipped, flips.flipped + flips.ambiguous);
-    if (remeshFactor == 0) {
+    if (remeshFactor <= kAutomaticLength) {
         EXPECT_EQ(loggedFlipped, 0);
     } else {
         // re-meshing coarser than thin parts of a scan (the armadillo's fingers at 3x its mean edge)
         // can leave a face upside down on the input: counted, and rare
         EXPECT_LE(flips.flipped, 2) << "faces flipped against the input after re-meshing";
     }
-    if (remeshFactor > 0) {
+    if (remeshFactor == kAutomaticLength) {
+        EXPECT_TRUE(r.Logged("Q-Morph re-meshing to edge length")) << all;
+        EXPECT_TRUE(r.Logged("(automatic)")) << all;
+    } else if (remeshFactor > 0) {
         EXPECT_TRUE(r.Logged("Q-Morph re-meshing to edge length")) << all;
     } else {
         EXPECT_EQ(CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS), selected);
@@ -261,7 +273,9 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = 0, b
     EXPECT_EQ(mm->cm.vn - mm->cm.fn * 3 / 2 + mm->cm.fn, eulerIn) << "genus kept";
 }
 
+// The defaults: re-meshed first at the automatic length; and on the split mesh's own triangles.
 TEST(QMorphPlugin, WholePipelineOnFandisk) { RunWholePipeline("fandisk"); }
+TEST(QMorphPlugin, WholePipelineOnFandiskAsTriangulated) { RunWholePipeline("fandisk", kInputTriangles); }
 
 // Coarse re-meshing of the armadillo's thin, hairpin-shaped region fronts: two patches could make the
 // same chord between front nodes (a non-manifold edge) unless such chords are refused.
@@ -272,7 +286,7 @@ TEST(QMorphPlugin, WholePipelineOnArmadilloRemeshedCoarsely) { RunWholePipeline(
 TEST(QMorphPlugin, WholePipelineOnElephantWithoutPreservingTheFront)
 {
     int kept = 0, sewn = 0;
-    RunWholePipeline("elephant", 0, true, &kept);
-    RunWholePipeline("elephant", 0, false, &sewn);
+    RunWholePipeline("elephant", kInputTriangles, true, &kept);
+    RunWholePipeline("elephant", kInputTriangles, false, &sewn);
     EXPECT_LT(sewn, kept);
 }

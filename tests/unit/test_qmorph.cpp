@@ -365,6 +365,27 @@ TEST(QMorph, CubeRemeshedToATargetLengthKeepsItsEdgesAsChains)
     EXPECT_NEAR(Volume(m), volume, 1e-4 * volume) << "flat sides, fixed edges: the volume is exact";
 }
 
+// The automatic re-meshing length, hand-computed on cubes of side 2 (area 24, diagonal 2 sqrt 3):
+// equilateral triangles of side L tile the area in as many triangles as the input (at most 250,000),
+// L = sqrt(24 / (sqrt(3) / 4 F)), but never above 1% of the diagonal.
+TEST(QMorph, AutomaticEdgeLengthKeepsTheInputsResolution)
+{
+    const double cap = 0.01 * 2 * std::sqrt(3.0), equilateral = std::sqrt(3.0) / 4;
+    for (int n : {2, 100, 160}) {  // 12 n^2 triangles: 48 (coarse: the cap), 120,000, 307,200 (> 250,000)
+        TMesh m;
+        MakeCube(m, n);
+        ASSERT_EQ(m.fn, 12 * n * n);
+        const double density = std::sqrt(24 / (equilateral * std::min(m.fn, 250000)));
+        EXPECT_NEAR(QM::AutomaticEdgeLength(m), std::min(density, cap), 1e-5) << n;
+        QM::Params p;
+        EXPECT_EQ(QM::RemeshLength(m, p), 0) << "no re-meshing unless asked";
+        p.remeshFirst = true;
+        EXPECT_NEAR(QM::RemeshLength(m, p), std::min(density, cap), 1e-5);
+        p.targetEdgeLength = 0.5;
+        EXPECT_EQ(QM::RemeshLength(m, p), 0.5) << "a length given wins";
+    }
+}
+
 TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
 {
     TMesh m, input;

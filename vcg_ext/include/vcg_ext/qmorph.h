@@ -60,7 +60,10 @@ public:
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
         double creaseAngleDeg = 60;        // edges this sharp (angle between face normals) are front
                                            // too, so no quad folds over a crease; >= 180: off
-        double targetEdgeLength = 0;       // > 0: isotropic re-meshing of the whole mesh first (absolute units)
+        bool remeshFirst = false;          // isotropic re-meshing of the whole mesh first, at targetEdgeLength
+                                           // or, when that is 0, at AutomaticEdgeLength
+        double targetEdgeLength = 0;       // > 0: re-meshing at this length (absolute units), even with
+                                           // remeshFirst off; 0: automatic (remeshFirst) or none
         int remeshIterations = 5;          // split/collapse/flip/relax rounds of that re-meshing
 
         std::string Validate() const
@@ -68,7 +71,7 @@ public:
             if (smoothingIterations < 0 || smoothingIterations > 100) return "smoothing iterations must be in 0..100";
             if (!(creaseAngleDeg > 0 && creaseAngleDeg <= 180)) return "the crease angle must be in (0, 180] degrees";
             if (!(closedAngleDeg > 30 && closedAngleDeg < 180)) return "the closed-end angle must be in (30, 180) degrees";
-            if (!(targetEdgeLength >= 0 && std::isfinite(targetEdgeLength))) return "the target edge length must be a finite number >= 0 (0: no re-meshing)";
+            if (!(targetEdgeLength >= 0 && std::isfinite(targetEdgeLength))) return "the target edge length must be a finite number >= 0 (0: automatic)";
             if (remeshIterations < 1 || remeshIterations > 50) return "re-meshing iterations must be in 1..50";
             return "";
         }
@@ -79,6 +82,7 @@ public:
         int initialFrontEdges = 0, patches = 0, patchesWithoutFront = 0;
         int creaseEdges = 0;  // sharp edges that were not selected but cut the patches too
         double targetEdgeLength = 0;   // re-meshing length used (0: none)
+        bool automaticLength = false;  // ... chosen by AutomaticEdgeLength
         typename qmorph::FeatureRemesh<MeshType>::Stats remesh;
         int quads = 0, triangles = 0;
         qmorph::PatchStats ops;
@@ -100,9 +104,9 @@ public:
         std::string RemeshSummary() const
         {
             if (!(targetEdgeLength > 0)) return "";
-            return Format("Q-Morph re-meshing to edge length %g: %d front edges became %d (%d feature edges before), %d -> %d "
+            return Format("Q-Morph re-meshing to edge length %g%s: %d front edges became %d (%d feature edges before), %d -> %d "
                           "triangles; %d splits, %d collapses, %d flips",
-                          targetEdgeLength, remesh.frontEdgesBefore, remesh.frontEdgesAfter, remesh.featureEdges,
+                          targetEdgeLength, automaticLength ? " (automatic)" : "", remesh.frontEdgesBefore, remesh.frontEdgesAfter, remesh.featureEdges,
                           remesh.facesBefore, remesh.facesAfter, remesh.splits, remesh.collapses, remesh.flips);
         }
         std::string QualitySummary() const
@@ -136,20 +140,47 @@ public:
         return "";
     }
 
+    // The re-meshing length these parameters give on m (0: no re-meshing).
+    static double RemeshLength(const MeshType &m, const Params &params)
+    {
+        if (params.targetEdgeLength > 0) return params.targetEdgeLength;
+        return params.remeshFirst ? AutomaticEdgeLength(m) : 0;
+    }
+
+    // The automatic target edge length: the side of equilateral triangles that tile the surface in as
+    // many triangles as the input has (so the quads keep the input's resolution whatever its
+    // triangles' shapes), but no more than kMaxAutoTriangles of them, and no longer than
+    // kMaxAutoDiagonalFraction of the bounding-box diagonal (a coarse CAD tessellation of a few
+    // hundred slivers has too few triangles to tell its resolution; its features get at least that).
+    static double AutomaticEdgeLength(const MeshType &m)
+    {
+        vcg::Box3d box;
+        for (const VertexType &v : m.vert)
+            if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
+        const double triangles = std::min<double>(std::max(1, m.fn), kMaxAutoTriangles);
+        const double density = std::sqrt(SurfaceArea(m) / (kEquilateralArea * triangles));
+        return std::min(density, kMaxAutoDiagonalFraction * box.Diag());
+    }
+
     // Bounded memory: a target edge length far below the mesh's scale would make a huge mesh.
     static std::string CheckRemeshSize(const MeshType &m, const Params &params)
     {
-        if (params.targetEdgeLength <= 0) return "";
-        double area = 0;
-        for (const FaceType &f : m.face)
-            if (!f.IsD()) area += vcg::DoubleArea(f) / 2;
-        const double L = params.targetEdgeLength;
-        const double estimate = area / (std::sqrt(3.0) / 4 * L * L);
+        const double L = RemeshLength(m, params);
+        if (L <= 0) return "";
+        const double estimate = SurfaceArea(m) / (kEquilateralArea * L * L);
         const double cap = 2e7;
         if (estimate > cap)
             return "the target edge length " + std::to_string(L) + " is too small for this mesh: re-meshing would make about " +
                    std::to_string(long(estimate)) + " triangles (at most " + std::to_string(long(cap)) + ")";
         return "";
+    }
+
+    static double SurfaceArea(const MeshType &m)
+    {
+        double area = 0;
+        for (const FaceType &f : m.face)
+            if (!f.IsD()) area += vcg::DoubleArea(f) / 2;
+        return area;
     }
 
     static int CountSelectedEdges(const MeshType &m)
@@ -176,6 +207,10 @@ public:
     }
 
 private:
+    static constexpr double kEquilateralArea = 0.43301270189221932;  // sqrt(3) / 4, unit side
+    static constexpr double kMaxAutoTriangles = 250000;
+    static constexpr double kMaxAutoDiagonalFraction = 0.01;
+
     static void Progress(vcg::CallBackPos *cb, int percent, const char *msg)
     {
         if (cb) cb(std::max(0, std::min(99, percent)), msg);
@@ -185,10 +220,11 @@ private:
     // then everything written back at once.
     static void Run(MeshType &m, const Params &par, vcg::CallBackPos *cb, Result &res)
     {
-        res.targetEdgeLength = par.targetEdgeLength;
+        res.targetEdgeLength = RemeshLength(m, par);
+        res.automaticLength = res.targetEdgeLength > 0 && !(par.targetEdgeLength > 0);
         InputSurface<MeshType> input(m);  // the quality report's reference (and the re-meshing's)
-        if (par.targetEdgeLength > 0) {
-            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, par.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
+        if (res.targetEdgeLength > 0) {
+            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, res.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
         }
         qmorph::FrontPartition part;
         part.Build(m, par.creaseAngleDeg);
@@ -203,7 +239,7 @@ private:
             if (!in.hasFront) ++res.patchesWithoutFront;
             qmorph::MixedMesh mm;
             mm.Build(in.points, in.tris, in.cut);
-            if (par.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
+            if (res.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
                 mm.judge = [&input](const P3 &p, const P3 &own) { return input.NormalUnder(p, own); };
             mm.SetKeys(in.globalOf);
             SurfaceProjector surface;
