@@ -76,7 +76,7 @@ std::string Count(long n) { return std::to_string(n); }
 
 // ------------------------------------------------------------------ report tables
 enum TableId {
-    T_VSA, T_SMOOTH, T_SPLIT, T_QMORPH, T_CHECKS, T_BARS, T_BITQUAD, T_CGAL_SPEED, T_CGAL_QUALITY, T_BIG, T_NOTES, T_COUNT
+    T_VSA, T_SMOOTH, T_SPLIT, T_QMORPH, T_CHECKS, T_BARS, T_BITQUAD, T_CGAL_SPEED, T_CGAL_QUALITY, T_BIG, T_SCALING, T_NOTES, T_COUNT
 };
 
 struct TableDef {
@@ -160,6 +160,15 @@ const TableDef &Def(int t)
          "mesh and the earlier stages' results are in the baseline). peak bytes / input face: the process's peak VmHWM over the "
          "4 stages / input faces (compare the two sizes for linearity). Targets: VSA per-iteration no worse than CGAL "
          "(see the CGAL table), smoothing < 1 s, split < 1 s, Q-Morph < 30 s, memory linear."},
+        {"Scaling - the whole pipeline on a mesh refined 1x, 4x, 16x (midpoint subdivision), 1 and 2 threads",
+         {"mesh", "faces", "threads", "regions", "max dev. (deg)", "VSA (s)", "smoothing (s)", "split (s)", "Q-Morph (s)",
+          "total (s)", "us / face", "peak bytes / face", "quad % (area)", "closed, Euler kept", "flipped",
+          "longest progress gap (s)"},
+         "Each row its own process. threads: Q-Morph's pool (QMorph::Params::threads; the other stages run on one "
+         "thread). Times: wall clock of the core calls (no file IO), default parameters. peak bytes / face: the process's "
+         "VmHWM over the four stages / input faces (the process also holds a copy of the input). longest progress gap: "
+         "the longest time between two progress callbacks from the start of VSA to the end of Q-Morph. flipped: "
+         "Q-Morph's own count against the input surface."},
         {"Notes", {"mesh", "note"}, ""},
     };
     return defs[t];
@@ -208,7 +217,21 @@ struct Options {
     bool fork = true;
     bool onlyBig = false;
     std::string out;
+    std::string scaling;                 // base mesh of the scaling run ("": none)
+    std::vector<int> scalingSteps = {0, 1, 2};
+    std::vector<int> scalingThreads = {1, 2};
+    std::string plot;                    // PNG of time per face against faces (gnuplot)
 };
+
+std::vector<int> IntList(const std::string &text)
+{
+    std::vector<int> v;
+    std::stringstream ss(text);
+    std::string x;
+    while (std::getline(ss, x, ','))
+        if (!x.empty()) v.push_back(std::atoi(x.c_str()));
+    return v;
+}
 
 void Usage()
 {
@@ -233,7 +256,10 @@ void Usage()
         "  --remesh F          Q-Morph re-meshes first to F x the mean edge length of its input\n"
         "  --remesh-diag P     Q-Morph re-meshes first to P % of the bounding-box diagonal\n"
         "  --no-cleanup, --no-smoothing  Q-Morph without its topological clean-up / tangent-plane smoothing\n"
-        "  --no-preserve       Q-Morph with 'Preserve initial front' off\n");
+        "  --no-preserve       Q-Morph with 'Preserve initial front' off\n"
+        "  --scaling NAME      only the scaling run: NAME refined by midpoint steps (--scaling-steps, default 0,1,2:\n"
+        "                      1x, 4x, 16x), each with Q-Morph on 1 and 2 threads (--scaling-threads, default 1,2)\n"
+        "  --plot FILE.png     with --scaling: gnuplot PNG of time per face against faces (data in FILE.png.dat)\n");
 }
 
 bool FileExists(const std::string &p)
@@ -298,6 +324,28 @@ double MeanEdgeLength(const TMesh &m)
     return n ? sum / n : 0;
 }
 
+// Progress callbacks of the scaling run: the longest time between two of them (MeshLab users see a
+// frozen bar when it is long).
+struct ProgressGaps {
+    bool on = false;
+    Clock::time_point last;
+    double longest = 0;
+    std::string lastMessage = "start", where;  // the callbacks around the longest gap
+    void Start() { on = true; last = Clock::now(); longest = 0; lastMessage = "start"; where.clear(); }
+    void Tick(const char *message)
+    {
+        if (!on) return;
+        const auto now = Clock::now();
+        const double gap = std::chrono::duration<double>(now - last).count();
+        if (gap > longest) { longest = gap; where = lastMessage + " -> " + message; }
+        last = now;
+        lastMessage = message;
+    }
+    void Stop() { Tick("end"); on = false; }
+} g_gaps;
+bool GapCallback(const int, const char *message) { g_gaps.Tick(message ? message : ""); return true; }
+vcg::CallBackPos *g_stageCallback = nullptr;  // passed to every stage (the scaling run sets it)
+
 void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMesh &work, TMesh *splitOut,
                  const std::string &label, bool verbose)
 {
@@ -316,7 +364,7 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
 
     // 1. segmentation
     auto t0 = begin(0, "VSA");
-    r.vsa = VSA::Segment(work, vp);
+    r.vsa = VSA::Segment(work, vp, g_stageCallback);
     r.tVsa = Since(t0);
     end(0);
     if (!r.vsa.error.empty()) { r.error = r.vsa.error; r.failedStage = "VSA"; return; }
@@ -325,7 +373,7 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
     TMesh poly;
     {
         t0 = begin(1, "boundary smoothing");
-        Smoothing::Result s = Smoothing::Smooth(work, r.vsa.faceRegion, Smoothing::Params());
+        Smoothing::Result s = Smoothing::Smooth(work, r.vsa.faceRegion, Smoothing::Params(), g_stageCallback);
         if (s.error.empty()) {
             Smoothing::Polylines lines = Smoothing::ToPolylines(s.topology, s.curves);
             Smoothing::BuildEdgeMesh(lines, poly);
@@ -349,7 +397,7 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
 
     // 3. split along the front
     t0 = begin(2, "split along the front");
-    r.split = Embedding::Embed(work, poly, Embedding::Params());
+    r.split = Embedding::Embed(work, poly, Embedding::Params(), g_stageCallback);
     r.tSplit = Since(t0);
     end(2);
     r.split.faceRegion.clear();
@@ -371,7 +419,7 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
         vcg::tri::UpdateBounding<TMesh>::Box(work);
         qp.targetEdgeLength = gRemeshDiagPercent / 100 * work.bbox.Diag();
     }
-    r.qm = QM::Apply(work, qp);
+    r.qm = QM::Apply(work, qp, g_stageCallback);
     r.tQm = Since(t0);
     end(3);
     if (!r.qm.error.empty()) { r.error = r.qm.error; r.failedStage = "Q-Morph"; return; }
@@ -534,10 +582,46 @@ struct Job {
     std::string label, path;
     int refineSteps = 0;   // big case: midpoint subdivision steps applied to the loaded mesh
     bool big = false;
+    bool scaling = false;  // scaling run: the pipeline, per-stage times, memory, progress gaps
+    int threads = 0;       // scaling run: Q-Morph's threads
 };
+
+void RunScaling(const Job &job)
+{
+    TMesh input;
+    std::string err = LoadMesh(input, job.path);
+    if (!err.empty()) { Note(job.label, err); return; }
+    MidpointRefine(input, job.refineSteps);
+    const std::string label = Fmt("%s x%d", job.label.c_str(), 1 << (2 * job.refineSteps));
+    for (auto &f : input.face) f.Q() = 0;
+    const long eulerIn = EulerCharacteristic(input);
+    const int faces = input.fn;
+    gQMorphParams.threads = job.threads;
+    g_stageCallback = GapCallback;
+    PipelineRun r;
+    TMesh work;
+    Progress(label, Fmt("%d faces, %d Q-Morph threads", faces, job.threads));
+    g_gaps.Start();
+    RunPipeline(input, VSA::Params(), r, work, nullptr, label, true);
+    g_gaps.Stop();
+    g_stageCallback = nullptr;
+    if (!r.error.empty()) { Note(label, r.failedStage + ": " + r.error); return; }
+    double peak = 0;
+    for (double p : r.peakAfter) peak = std::max(peak, p);
+    input.Clear();
+    const QuadMeasure qm = MeasureQuads(work);
+    const auto out = vcg_ext::MeshChecks<TMesh>::Inspect(work);
+    const bool closed = out.IsClosed() && out.IsTwoManifold() && out.IsOriented();
+    Emit(T_SCALING, {label, Count(faces), Count(job.threads), Count(r.vsa.regions), Fmt("%.1f", r.vsa.maxDeviationDeg),
+                     Sec(r.tVsa), Sec(r.tSmooth), Sec(r.tSplit), Sec(r.tQm), Sec(r.Total()),
+                     Fmt("%.2f", 1e6 * r.Total() / faces), Fmt("%.0f", peak * 1048576.0 / faces),
+                     Pct(qm.q.quadAreaFraction), YesNo(closed) + ", " + YesNo(qm.euler == eulerIn),
+                     Count(r.qm.quality.flippedFaces), Fmt("%.2f (%s)", g_gaps.longest, g_gaps.where.c_str())});
+}
 
 void RunJob(const Job &job, const Options &o)
 {
+    if (job.scaling) { RunScaling(job); return; }
     TMesh input;
     std::string err = LoadMesh(input, job.path);
     if (!err.empty()) { Note(job.label, err); return; }
@@ -796,6 +880,44 @@ std::string Markdown(const Report &rep, const std::string &preamble)
     return out.str();
 }
 
+// Time per face against faces, per stage and thread count (gnuplot, log-x): writes FILE.dat and
+// FILE; returns a line for the report.
+std::string PlotScaling(const Report &rep, const std::string &png)
+{
+    const std::string dat = png + ".dat";
+    std::ofstream d(dat);
+    d << "# faces threads vsa_us smoothing_us split_us qmorph_us total_us (per input face)\n";
+    std::map<int, std::vector<std::vector<std::string>>> byThreads;
+    for (const auto &row : rep.rows[T_SCALING]) byThreads[std::atoi(row[2].c_str())].push_back(row);
+    int block = 0;
+    std::string plots;
+    for (const auto &bt : byThreads) {
+        for (const auto &row : bt.second) {
+            const double f = std::atof(row[1].c_str());
+            d << row[1] << " " << row[2];
+            for (int c : {5, 6, 7, 8, 9}) d << " " << 1e6 * std::atof(row[c].c_str()) / f;
+            d << "\n";
+        }
+        d << "\n\n";
+        const std::string t = Fmt("%d thread%s", bt.first, bt.first == 1 ? "" : "s");
+        plots += Fmt("%s'%s' index %d using 1:7 with linespoints lw 2 title 'whole pipeline, %s', "
+                     "'%s' index %d using 1:6 with linespoints title 'Q-Morph, %s', "
+                     "'%s' index %d using 1:3 with linespoints dt 2 title 'VSA, %s'",
+                     plots.empty() ? "" : ", ", dat.c_str(), block, t.c_str(), dat.c_str(), block, t.c_str(), dat.c_str(),
+                     block, t.c_str());
+        ++block;
+    }
+    d.close();
+    const std::string script = png + ".gp";
+    std::ofstream g(script);
+    g << "set terminal pngcairo size 900,560\nset output '" << png << "'\nset logscale x\nset grid\n"
+      << "set xlabel 'input faces'\nset ylabel 'wall time per input face (microseconds)'\n"
+      << "set key outside right\nset yrange [0:*]\nplot " << plots << "\n";
+    g.close();
+    const int rc = std::system(("gnuplot '" + script + "'").c_str());
+    return rc == 0 ? "- scaling plot: `" + png + "` (data `" + dat + "`)\n" : "- scaling plot: gnuplot failed on `" + script + "`\n";
+}
+
 std::string Machine()
 {
     std::string cpu = "unknown CPU";
@@ -845,6 +967,10 @@ int main(int argc, char **argv)
         else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
         else if (a == "--no-cleanup") gQMorphParams.cleanup = false;
         else if (a == "--no-smoothing") gQMorphParams.smoothing = false;
+        else if (a == "--scaling") o.scaling = next();
+        else if (a == "--scaling-steps") o.scalingSteps = IntList(next());
+        else if (a == "--scaling-threads") o.scalingThreads = IntList(next());
+        else if (a == "--plot") o.plot = next();
         else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "unknown option %s\n", a.c_str()); Usage(); return 2; }
         else o.names.push_back(a);
     }
@@ -873,6 +999,19 @@ int main(int argc, char **argv)
     }
     const bool defaults = o.names.empty();
     if (defaults) o.names = {"fandisk", "rocker_arm_3356", "rocker_arm_20k", "bunny_3k", "elephant", "casting"};
+    if (!o.scaling.empty()) {  // the scaling run alone
+        const std::string path = ResolveMesh(o, o.scaling);
+        if (path.empty()) { std::fprintf(stderr, "--scaling: %s not found\n", o.scaling.c_str()); return 2; }
+        for (int steps : o.scalingSteps)
+            for (int threads : o.scalingThreads) {
+                Job j{BaseName(path), path, steps, false};
+                j.scaling = true;
+                j.threads = threads;
+                jobs.push_back(j);
+            }
+        o.onlyBig = true;
+        o.big = "none";
+    }
     if (!o.onlyBig)
         for (const std::string &n : o.names) {
             std::string path = ResolveMesh(o, n);
@@ -936,6 +1075,7 @@ int main(int argc, char **argv)
     pre += Fmt("; CGAL: %s; total benchmark time %.0f s\n", CgalAvailable() ? ("yes, " + CgalVersion()).c_str() : "absent", total);
     pre += Fmt("- timings: wall clock (steady_clock), best of %d runs on the small meshes, 1 run on the big ones; "
                "each mesh in its own process; load average at the start: %s\n", o.repeats, loadBefore.c_str());
+    if (!o.plot.empty() && !report.rows[T_SCALING].empty()) pre += PlotScaling(report, o.plot);
     const std::string md = Markdown(report, pre);
     std::fputs(md.c_str(), stdout);
     if (!o.out.empty()) {

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <string>
 #include <unordered_set>
@@ -30,6 +31,7 @@
 
 #include <vcg_ext/common/format.h>
 #include <vcg_ext/common/input_surface.h>
+#include <vcg_ext/common/parallel.h>
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/qmorph/partition.h>
@@ -65,6 +67,7 @@ public:
         double targetEdgeLength = 0;       // > 0: re-meshing at this length (absolute units), even with
                                            // remeshFirst off; 0: automatic (remeshFirst) or none
         int remeshIterations = 5;          // split/collapse/flip/relax rounds of that re-meshing
+        int threads = 0;                   // patches meshed at once: 0 = the machine's cores (same output)
 
         std::string Validate() const
         {
@@ -197,6 +200,7 @@ public:
     {
         auto t0 = std::chrono::steady_clock::now();
         Result res;
+        Progress(cb, 0, "Q-Morph: checking the mesh");
         res.error = Check(m, params);
         if (!res.error.empty()) return res;
 
@@ -222,38 +226,72 @@ private:
     {
         res.targetEdgeLength = RemeshLength(m, par);
         res.automaticLength = res.targetEdgeLength > 0 && !(par.targetEdgeLength > 0);
+        Progress(cb, 0, "Q-Morph: the input surface");
         InputSurface<MeshType> input(m);  // the quality report's reference (and the re-meshing's)
         if (res.targetEdgeLength > 0) {
             res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, res.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
         }
+        Progress(cb, 1, "Q-Morph: patches");
         qmorph::FrontPartition part;
         part.Build(m, par.creaseAngleDeg);
         res.initialFrontEdges = part.frontEdges;
         res.creaseEdges = part.creaseEdges;
         const qmorph::PatchParams pp = PatchParamsOf(par);
         qmorph::QuadOutput out(m.vert.size());
-        part.ForEachPatch([&](size_t begin, size_t end) {
-            Progress(cb, int(100.0 * begin / std::max<size_t>(1, part.order.size())), "Q-Morph: meshing patches");
-            ++res.patches;
-            qmorph::PatchInput in = part.Extract(m, begin, end);
-            if (!in.hasFront) ++res.patchesWithoutFront;
-            qmorph::MixedMesh mm;
-            mm.Build(in.points, in.tris, in.cut);
-            if (res.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
-                mm.judge = [&input](const P3 &p, const P3 &own) { return input.NormalUnder(p, own); };
-            mm.SetKeys(in.globalOf);
-            SurfaceProjector surface;
-            surface.Build(in.points, in.tris);
-            if (in.hasFront) {
-                TellOtherPatches(part, part.patchOf[part.order[begin]], in, mm);
-                res.ops += qmorph::PatchMesher(mm, surface, in.home, pp).Run();
-            }
-            out.AddPatch(mm, surface, in.home, in);
+        // Patches are independent (initial front edges never change): meshed on a pool, biggest
+        // first, appended in patch order on this thread, which alone calls the progress callback.
+        std::vector<std::pair<size_t, size_t>> patches;
+        part.ForEachPatch([&](size_t begin, size_t end) { patches.push_back({begin, end}); });
+        std::vector<size_t> biggestFirst(patches.size());
+        std::iota(biggestFirst.begin(), biggestFirst.end(), size_t(0));
+        std::stable_sort(biggestFirst.begin(), biggestFirst.end(), [&](size_t a, size_t b) {
+            return patches[a].second - patches[a].first > patches[b].second - patches[b].first;
         });
+        std::mutex inputMutex;  // the input surface's closest-point queries mark its faces
+        struct Meshed {
+            qmorph::QuadOutput::PatchPolygons polygons;
+            qmorph::PatchStats ops;
+            bool hasFront = false;
+        };
+        size_t facesDone = 0;
+        OrderedParallelFor<Meshed>(
+            patches.size(), ThreadCount(par.threads), biggestFirst,
+            [&](size_t i) {
+                const size_t begin = patches[i].first, end = patches[i].second;
+                Meshed r;
+                // Extract writes only its own patch's sectors of the partition's scratch.
+                qmorph::PatchInput in = part.Extract(m, begin, end);
+                r.hasFront = in.hasFront;
+                qmorph::MixedMesh mm;
+                mm.Build(in.points, in.tris, in.cut);
+                if (res.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
+                    mm.judge = [&input, &inputMutex](const P3 &p, const P3 &own) {
+                        std::lock_guard<std::mutex> lock(inputMutex);
+                        return input.NormalUnder(p, own);
+                    };
+                mm.SetKeys(in.globalOf);
+                SurfaceProjector surface;
+                surface.Build(in.points, in.tris);
+                if (in.hasFront) {
+                    TellOtherPatches(part, part.patchOf[part.order[begin]], in, mm);
+                    r.ops = qmorph::PatchMesher(mm, surface, in.home, pp).Run();
+                }
+                r.polygons = qmorph::QuadOutput::Collect(mm, surface, in.home, in);
+                return r;
+            },
+            [&](size_t i, Meshed &&r) {
+                ++res.patches;
+                if (!r.hasFront) ++res.patchesWithoutFront;
+                res.ops += r.ops;
+                out.Append(r.polygons);
+                facesDone += patches[i].second - patches[i].first;
+            },
+            [&]() { Progress(cb, int(100.0 * facesDone / std::max<size_t>(1, part.order.size())), "Q-Morph: meshing patches"); });
         res.quads = out.quads;
         res.triangles = out.triangles;
         Progress(cb, 99, "Q-Morph: writing the quad mesh");
         out.WriteTo(m, part);
+        Progress(cb, 99, "Q-Morph: quality report");
         const PolygonMesh pm = QuadQuality::FromFauxMesh(m);
         res.quality = QuadQuality::Measure(pm, input.NormalsUnder(pm, out.referenceNormals));
     }

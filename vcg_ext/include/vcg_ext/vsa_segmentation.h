@@ -106,11 +106,14 @@ public:
     {
         auto t0 = std::chrono::steady_clock::now();
         Result res;
+        if (cb) cb(0, "VSA: checking the mesh");
         res.error = Check(m, p, &res.warning);
         if (!res.error.empty()) return res;
         vcg::tri::RequireFFAdjacency(m);
+        if (cb) cb(1, "VSA: face adjacency");
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
 
+        if (cb) cb(3, "VSA: face areas and normals");
         VSASegmentation s(m, p, cb);
         s.Run(res);
 

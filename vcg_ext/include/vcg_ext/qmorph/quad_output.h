@@ -41,23 +41,32 @@ public:
 
     explicit QuadOutput(size_t inputVertices) : movedTo(inputVertices, -1), used(inputVertices, 0) {}
 
+    // What one meshed patch contributes, made on any thread (Collect) and appended in patch
+    // order on one (Append): the output is the same whatever thread meshed which patch.
+    struct PatchPolygons;
+
     // Collects the faces of a meshed patch.
     void AddPatch(const MixedMesh &mm, const SurfaceProjector &surface, const std::vector<int> &home, const PatchInput &in)
     {
+        Append(Collect(mm, surface, home, in));
+    }
+
+    // The faces of a meshed patch; new points numbered from 0 within the patch (NewPointId).
+    static PatchPolygons Collect(const MixedMesh &mm, const SurfaceProjector &surface, const std::vector<int> &home,
+                                 const PatchInput &in)
+    {
+        PatchPolygons out;
         std::vector<int> outId(mm.VertexCount(), 0);
         for (int v = 0; v < mm.VertexCount(); ++v) {
             if (!mm.vertAlive[v]) continue;
             if (v < int(in.globalOf.size())) {
                 const int g = in.globalOf[v];
                 outId[v] = g;
-                used[g] = 1;
-                if (!mm.vertFixed[v] && !(mm.pos[v] == in.points[v])) {
-                    movedTo[g] = int(moved.size());
-                    moved.push_back(mm.pos[v]);
-                }
+                out.used.push_back(g);
+                if (!mm.vertFixed[v] && !(mm.pos[v] == in.points[v])) out.moved.push_back({g, mm.pos[v]});
             } else {
-                newPoints.push_back(mm.pos[v]);
-                outId[v] = NewPointId(int(newPoints.size()) - 1);
+                out.newPoints.push_back(mm.pos[v]);
+                outId[v] = NewPointId(int(out.newPoints.size()) - 1);
             }
         }
         for (int f = 0; f < mm.FaceCount(); ++f) {
@@ -72,10 +81,29 @@ public:
                 poly.v[k] = outId[corner[k]];
             }
             poly.diagonal = poly.size == 4 ? PreferredDiagonal(mm, surface, home, corner) : kEitherDiagonal;
+            out.polygons.push_back(poly);
+            out.referenceNormals.push_back(mm.InputFaceNormal(f, true));
+        }
+        return out;
+    }
+
+    // Adds a collected patch after the ones already added.
+    void Append(const PatchPolygons &patch)
+    {
+        const int base = int(newPoints.size());
+        newPoints.insert(newPoints.end(), patch.newPoints.begin(), patch.newPoints.end());
+        for (int g : patch.used) used[g] = 1;
+        for (const auto &mv : patch.moved) {
+            movedTo[mv.first] = int(moved.size());
+            moved.push_back(mv.second);
+        }
+        for (Polygon poly : patch.polygons) {
+            for (int k = 0; k < poly.size; ++k)
+                if (poly.v[k] < 0) poly.v[k] = NewPointId(base + NewPointIndex(poly.v[k]));
             polygons.push_back(poly);
-            referenceNormals.push_back(mm.InputFaceNormal(f, true));
             if (poly.size == 4) ++quads; else ++triangles;
         }
+        referenceNormals.insert(referenceNormals.end(), patch.referenceNormals.begin(), patch.referenceNormals.end());
     }
 
     // Replaces the faces of m by the polygons (quads as faux pairs), front edges selected.
@@ -173,6 +201,17 @@ private:
         float quality = 0;
         Diagonal diagonal = kEitherDiagonal;
     };
+
+public:
+    struct PatchPolygons {
+        std::vector<Polygon> polygons;
+        std::vector<P3> referenceNormals;          // per polygon
+        std::vector<P3> newPoints;                 // nodes made inside the patch
+        std::vector<int> used;                     // input vertices still nodes
+        std::vector<std::pair<int, P3>> moved;     // input vertex, new position
+    };
+
+private:
     std::vector<Polygon> polygons;
     std::vector<int> movedTo;  // per input vertex: its new position in `moved`, -1 if it stays
     std::vector<P3> moved;
