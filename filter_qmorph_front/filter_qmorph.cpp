@@ -44,6 +44,12 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList
                            "are cut like front edges (they are not selected), so no quad folds over a sharp crease "
                            "inside a patch (a VSA region may hold creases up to twice its threshold angle). Smaller: "
                            "more cuts, more patches; 180: off."));
+    par.addParam(RichBool("AllQuads", d.allQuads, "All quads",
+                          "On/off. On: no triangle is left; at the end every face is split into quads (a quad "
+                          "into four, a triangle into three, new points on the input surface; front and creases "
+                          "cut at their midpoints, the same way on both sides, so they stay chains of edges), and "
+                          "the re-meshing runs at twice the target length so the quads keep its size. Off: the "
+                          "few triangles Q-Morph cannot pair stay."));
     par.addParam(RichBool("RemeshFirst", true, "Re-mesh first",
                           "On/off. On (beyond the paper): the mesh is first re-meshed isotropically to triangles of "
                           "the target edge length, so the quads are well shaped whatever the input's triangles (CAD "
@@ -77,6 +83,7 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     p.smoothingIterations = par.getInt("SmoothingIterations");
     p.creaseAngleDeg = par.getFloat("CreaseAngle");
     p.remeshFirst = par.getBool("RemeshFirst");
+    p.allQuads = par.getBool("AllQuads");
     p.targetEdgeLength = p.remeshFirst ? par.getAbsPerc("TargetEdgeLength") : 0;
     p.remeshIterations = par.getInt("RemeshIterations");
     const QString exportPath = par.getSaveFileName("ExportPath").trimmed();

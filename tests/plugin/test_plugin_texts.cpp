@@ -47,5 +47,5 @@ TEST(PluginTexts, EveryTooltipStatesItsUnitAndEffect)
             EXPECT_GE(tip.size(), 80) << a->text().toStdString() << " / " << p.name().toStdString() << ": the effect";
         }
     }
-    EXPECT_EQ(parameters, 7 + 3 + 3 + 9);
+    EXPECT_EQ(parameters, 7 + 3 + 3 + 10);
 }

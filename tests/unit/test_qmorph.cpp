@@ -18,6 +18,10 @@ typedef vcg_ext::QMorph<TMesh> QM;
 
 namespace {
 
+// Rounding allowed (fraction of the diagonal) when the front is compared by position: float
+// coordinates of points computed in double.
+constexpr double kFrontRounding = 1e-6;
+
 std::string Describe(const QM::Result &r)
 {
     std::ostringstream s;
@@ -33,36 +37,18 @@ int Euler(const TMesh &m)
     return c.vertices - int(AllEdges(m).size()) + c.faces;
 }
 
-// With re-meshing, each selected input edge may be cut into pieces: the selected output edges must
-// lie on the selected input edges and cover each of them exactly (lengths add up), nothing else.
+// With re-meshing or all quads, the front is cut into pieces, and where it is straight the pieces
+// may span several input edges: every selected output edge lies on the input front (endpoints and
+// midpoint within rounding of it) and the output front covers every input front edge.
 void ExpectFrontIsChainsOfSelectedEdges(const std::set<PosEdge> &input, const TMesh &m)
 {
-    auto point = [](const PosEdge &e, int k) { return vcg::Point3d(e[3 * k], e[3 * k + 1], e[3 * k + 2]); };
-    auto onSegment = [](const vcg::Point3d &p, const vcg::Point3d &a, const vcg::Point3d &b) {
-        vcg::Point3d d = b - a;
-        double t = ((p - a) * d) / d.SquaredNorm();
-        return t > -1e-6 && t < 1 + 1e-6 && (a + d * t - p).Norm() < 1e-5 * d.Norm();
-    };
-    std::map<PosEdge, double> covered;
-    int stray = 0;
-    for (const PosEdge &e : SelectedEdges(m)) {
-        const vcg::Point3d a = point(e, 0), b = point(e, 1);
-        bool found = false;
-        for (const PosEdge &in : input)
-            if (onSegment(a, point(in, 0), point(in, 1)) && onSegment(b, point(in, 0), point(in, 1))) {
-                covered[in] += (b - a).Norm();
-                found = true;
-                break;
-            }
-        stray += !found;
-    }
-    EXPECT_EQ(stray, 0) << "selected output edges off the initial front";
-    int uncovered = 0;
-    for (const PosEdge &in : input) {
-        const double len = (point(in, 1) - point(in, 0)).Norm();
-        uncovered += std::fabs(covered[in] - len) > 1e-4 * len;
-    }
-    EXPECT_EQ(uncovered, 0) << "initial front edges not exactly covered by a chain of selected output edges";
+    vcg::Box3f box;
+    for (const auto &v : m.vert)
+        if (!v.IsD()) box.Add(v.cP());
+    const double rounding = kFrontRounding * box.Diag();
+    const std::vector<PosEdge> in(input.begin(), input.end());
+    EXPECT_EQ(FrontCurveMismatches(in, EdgesByPosition(m, true), rounding, rounding), 0)
+        << "the initial front is not exactly covered by chains of selected output edges";
 }
 
 // Runs Q-Morph on `m` and checks what must hold for any input: no error, no inverted quad, no face
@@ -84,6 +70,7 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
     const int euler = Euler(m);
     TMesh input;
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    const bool frontCut = p.allQuads || QM::RemeshLength(m, p) > 0;  // front edges cut into pieces
     QM::Result r = QM::Apply(m, p);
     EXPECT_EQ(r.error, "");
     if (!r.error.empty()) return r;
@@ -99,7 +86,7 @@ QM::Result RunAndCheckInvariants(TMesh &m, const QM::Params &p = QM::Params())
     if (r.quads) {
         EXPECT_GT(r.quality.minJacobian, 0.0) << Describe(r);
     }
-    if (p.targetEdgeLength > 0) {
+    if (frontCut) {
         ExpectFrontIsChainsOfSelectedEdges(selected, m);
     } else {
         EXPECT_EQ(SelectedEdges(m), selected) << "the selection must be exactly the initial front";
@@ -397,6 +384,47 @@ TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
     EXPECT_GT(r.quality.quadAreaFraction, 0.98) << Describe(r);
     EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
     EXPECT_NEAR(MeanSideLength(m), p.targetEdgeLength, 0.25 * p.targetEdgeLength);
+    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+}
+
+// All quads on the input's own triangles: every quad becomes 4 quads and every triangle 3, so the
+// counts follow from the run without it; no triangle is left, the front stays chains.
+TEST(QMorph, AllQuadsSplitsEveryFaceIntoQuads)
+{
+    TMesh base;
+    ASSERT_TRUE(LoadWithRegionFronts(base, "elephant"));
+    TMesh dominant, all;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(dominant, base);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(all, base);
+    QM::Params p;
+    const QM::Result before = RunAndCheckInvariants(dominant, p);
+    ASSERT_GT(before.triangles, 0) << "the case must leave triangles to split";
+    p.allQuads = true;
+    const QM::Result r = RunAndCheckInvariants(all, p);
+    EXPECT_EQ(r.triangles, 0);
+    EXPECT_EQ(r.quality.triangles, 0) << "read back from the mesh";
+    EXPECT_EQ(r.quads, 4 * before.quads + 3 * before.triangles);
+    // every old vertex keeps its valence; new irregular ones: triangle centres (valence 3), and
+    // triangles' corners are now counted (all their faces are quads)
+    EXPECT_LE(r.quality.irregularVertices, before.quality.irregularVertices + 4 * before.triangles);
+    EXPECT_LT(Hausdorff(all, base), 0.005 * base.bbox.Diag());
+}
+
+// All quads at the defaults of the filter (re-meshed first at twice the automatic length) on fandisk.
+TEST(QMorph, AllQuadsAfterRemeshingOnFandisk)
+{
+    TMesh m, input;
+    ASSERT_TRUE(LoadWithCreaseFront(m, input, "fandisk"));
+    QM::Params p;
+    p.remeshFirst = true;
+    p.allQuads = true;
+    const double L = QM::AutomaticEdgeLength(m);
+    const QM::Result r = RunAndCheckInvariants(m, p);
+    EXPECT_NEAR(r.targetEdgeLength, 2 * L, 1e-9 * L);
+    EXPECT_EQ(r.quality.triangles, 0);
+    EXPECT_NEAR(MeanSideLength(m), L, 0.25 * L) << "the quads keep the target size";
+    EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
+    EXPECT_LT(r.quality.IrregularFraction(), 0.10) << Describe(r);
     EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
 }
 

@@ -33,6 +33,7 @@
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/parallel.h>
 #include <vcg_ext/mesh_checks.h>
+#include <vcg_ext/qmorph/all_quads.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/qmorph/partition.h>
 #include <vcg_ext/qmorph/patch_mesher.h>
@@ -67,6 +68,8 @@ public:
         double targetEdgeLength = 0;       // > 0: re-meshing at this length (absolute units), even with
                                            // remeshFirst off; 0: automatic (remeshFirst) or none
         int remeshIterations = 5;          // split/collapse/flip/relax rounds of that re-meshing
+        bool allQuads = false;             // no triangle left: every face split into quads at the end
+                                           // (qmorph/all_quads.h), after re-meshing at twice the length
         int threads = 0;                   // patches meshed at once: 0 = the machine's cores (same output)
 
         std::string Validate() const
@@ -144,10 +147,11 @@ public:
     }
 
     // The re-meshing length these parameters give on m (0: no re-meshing).
+    // With allQuads, twice the length: the final split halves every edge.
     static double RemeshLength(const MeshType &m, const Params &params)
     {
-        if (params.targetEdgeLength > 0) return params.targetEdgeLength;
-        return params.remeshFirst ? AutomaticEdgeLength(m) : 0;
+        const double L = params.targetEdgeLength > 0 ? params.targetEdgeLength : params.remeshFirst ? AutomaticEdgeLength(m) : 0;
+        return params.allQuads ? 2 * L : L;
     }
 
     // The automatic target edge length: the side of equilateral triangles that tile the surface in as
@@ -291,6 +295,11 @@ private:
         res.triangles = out.triangles;
         Progress(cb, 99, "Q-Morph: writing the quad mesh");
         out.WriteTo(m, part);
+        if (par.allQuads) {
+            Progress(cb, 99, "Q-Morph: all quads");
+            res.quads = qmorph::AllQuads<MeshType>::Split(m, input, par.creaseAngleDeg);
+            res.triangles = 0;
+        }
         Progress(cb, 99, "Q-Morph: quality report");
         const PolygonMesh pm = QuadQuality::FromFauxMesh(m);
         res.quality = QuadQuality::Measure(pm, input.NormalsUnder(pm, out.referenceNormals));

@@ -1,0 +1,205 @@
+// All quads: one split of every face of a quad-dominant mesh (MeshLab's polygonal form, a quad is two
+// triangles sharing a faux edge) into quads, as the first step of Catmull-Clark subdivision without
+// its smoothing: a point at every edge's midpoint and at every face's centre; a quad becomes four
+// quads, a triangle three. Every vertex keeps its valence, the new ones are regular (face centres
+// of triangles: valence 3), so no triangle is left and the structure is kept.
+//
+// Where new points go: on a selected (front) edge or a sharp edge (faces meeting at more than the
+// crease angle) the exact midpoint, so the front and the creases keep their geometry and stay
+// chains of (selected) edges, each cut in two the same way for both sides; elsewhere the midpoint
+// and the face centre are moved onto the input surface, unless that would turn one of the new quads
+// against the input surface's normal (then they stay where they are). Region ids (face quality)
+// are kept per face.
+#ifndef VCG_EXT_QMORPH_ALL_QUADS_H
+#define VCG_EXT_QMORPH_ALL_QUADS_H
+
+#include <array>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/input_surface.h>
+#include <vcg_ext/common/polygon_geometry.h>
+
+namespace vcg_ext {
+namespace qmorph {
+
+template <class MeshType>
+class AllQuads
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
+    typedef typename MeshType::CoordType CoordType;
+    typedef vcg::Point3d P3;
+
+    // Splits every face of m (faux-edge quads and triangles) into quads; surface: the input.
+    // Returns the number of quads made.
+    static int Split(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg)
+    {
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
+        std::vector<Polygon> polygons = Gather(m);
+        std::unordered_set<uint64_t> selected;
+        for (FaceType &f : m.face)
+            for (int k = 0; k < 3; ++k)
+                if (f.IsFaceEdgeS(k)) selected.insert(Key(m, f.V0(k), f.V1(k)));
+
+        std::vector<P3> pos;
+        for (const VertexType &v : m.vert) pos.push_back(P3::Construct(v.cP()));
+        std::vector<P3> normal;  // per polygon, unit
+        for (const Polygon &p : polygons) normal.push_back(PolygonNormal(pos, p));
+
+        // edge midpoints: one new point per edge, shared by its two faces
+        std::unordered_map<uint64_t, std::array<int, 2>> sides;  // edge -> the (at most two) polygons on it
+        for (size_t i = 0; i < polygons.size(); ++i)
+            for (int k = 0; k < polygons[i].size; ++k) {
+                auto it = sides.emplace(EdgeKey(polygons[i].v[k], polygons[i].v[(k + 1) % polygons[i].size]), std::array<int, 2>{int(i), -1});
+                if (!it.second) it.first->second[1] = int(i);
+            }
+        const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
+        std::unordered_map<uint64_t, int> midpoint;
+        for (const auto &e : sides) {
+            const int a = int(e.first >> 32), b = int(e.first & 0xffffffffu);
+            P3 mid = (pos[a] + pos[b]) * 0.5;
+            const bool sharp = e.second[1] < 0 || normal[e.second[0]] * normal[e.second[1]] < creaseCos;
+            if (!sharp && !selected.count(e.first)) mid = OnSurface(surface, mid, normal[e.second[0]]);
+            midpoint[e.first] = int(pos.size());
+            pos.push_back(mid);
+        }
+        // face centres and the new quads (corner, midpoint, centre, midpoint)
+        struct NewQuad {
+            std::array<int, 4> v;
+            float quality;
+        };
+        std::vector<NewQuad> quads;
+        for (size_t i = 0; i < polygons.size(); ++i) {
+            const Polygon &p = polygons[i];
+            P3 centre(0, 0, 0);
+            for (int k = 0; k < p.size; ++k) centre += pos[p.v[k]];
+            centre /= double(p.size);
+            const int c = int(pos.size());
+            pos.push_back(centre);
+            const size_t first = quads.size();
+            for (int k = 0; k < p.size; ++k) {
+                const int prev = p.v[(k + p.size - 1) % p.size], here = p.v[k], next = p.v[(k + 1) % p.size];
+                quads.push_back({{here, midpoint[EdgeKey(here, next)], c, midpoint[EdgeKey(prev, here)]}, p.quality});
+            }
+            // the centre onto the surface unless a new quad would turn over there
+            pos[c] = OnSurface(surface, centre, normal[i]);
+            bool up = true;
+            for (size_t q = first; q < quads.size(); ++q) up = up && QuadNormal(pos, quads[q].v) * normal[i] > 0;
+            if (!up) pos[c] = centre;
+        }
+
+        // m rebuilt: the new points appended, two triangles (faux diagonal) per quad
+        const size_t oldVertices = m.vert.size();
+        auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, pos.size() - oldVertices);
+        for (size_t i = oldVertices; i < pos.size(); ++i, ++vi) vi->P() = CoordType::Construct(pos[i]);
+        for (FaceType &f : m.face) vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+        std::unordered_set<uint64_t> front;  // the halves of every selected edge
+        for (uint64_t e : selected) {
+            const int a = int(e >> 32), b = int(e & 0xffffffffu), mid = midpoint[e];
+            front.insert(EdgeKey(a, mid));
+            front.insert(EdgeKey(mid, b));
+        }
+        auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, 2 * quads.size());
+        for (const NewQuad &q : quads) {
+            // the diagonal from the old corner to the face centre: no other face has that edge (the
+            // other diagonal, between two midpoints, would be an edge twice around a doublet node)
+            const std::array<int, 4> &v = q.v;
+            const int s = 0;
+            const std::array<int, 3> t1{v[s], v[s + 1], v[(s + 2) % 4]}, t2{v[s], v[(s + 2) % 4], v[(s + 3) % 4]};
+            for (const std::array<int, 3> &t : {t1, t2}) {
+                FaceType &f = *fi++;
+                for (int k = 0; k < 3; ++k) f.V(k) = &m.vert[t[k]];
+                f.Flags() = 0;
+                if (hasQuality) f.Q() = q.quality;
+                for (int k = 0; k < 3; ++k)
+                    if (front.count(EdgeKey(t[k], t[(k + 1) % 3]))) f.SetFaceEdgeS(k);
+            }
+            (fi - 2)->SetF(2);  // t1's edge v[s+2] - v[s] and t2's edge v[s] - v[s+2]: the diagonal
+            (fi - 1)->SetF(0);
+        }
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        return int(quads.size());
+    }
+
+private:
+    struct Polygon {
+        int v[4];
+        int size;
+        float quality;
+    };
+
+    static uint64_t Key(MeshType &m, VertexType *a, VertexType *b)
+    {
+        return EdgeKey(int(vcg::tri::Index(m, a)), int(vcg::tri::Index(m, b)));
+    }
+
+    // The faces of m as polygons: a faux edge joins two triangles into a quad.
+    static std::vector<Polygon> Gather(MeshType &m)
+    {
+        const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
+        std::vector<Polygon> polygons;
+        std::vector<char> done(m.face.size(), 0);
+        auto V = [&](FaceType &f, int k) { return int(vcg::tri::Index(m, f.V(k))); };
+        for (size_t i = 0; i < m.face.size(); ++i) {
+            FaceType &f = m.face[i];
+            if (f.IsD() || done[i]) continue;
+            done[i] = 1;
+            const float q = hasQuality ? float(f.Q()) : 0.f;
+            int faux = -1, count = 0;
+            for (int k = 0; k < 3; ++k)
+                if (f.IsF(k)) {
+                    faux = k;
+                    ++count;
+                }
+            if (count == 1) {
+                FaceType *g = f.FFp(faux);
+                const int j = f.FFi(faux);
+                const size_t gi = vcg::tri::Index(m, g);
+                if (g != &f && !done[gi] && g->IsF(j)) {
+                    done[gi] = 1;
+                    polygons.push_back({{V(f, (faux + 1) % 3), V(f, (faux + 2) % 3), V(f, faux), V(*g, (j + 2) % 3)}, 4, q});
+                    continue;
+                }
+            }
+            polygons.push_back({{V(f, 0), V(f, 1), V(f, 2), -1}, 3, q});
+        }
+        return polygons;
+    }
+
+    static P3 PolygonNormal(const std::vector<P3> &pos, const Polygon &p)
+    {
+        P3 corners[4];
+        for (int k = 0; k < p.size; ++k) corners[k] = pos[p.v[k]];
+        P3 n = VectorArea(corners, p.size);
+        return n.Norm() > 0 ? n / n.Norm() : n;
+    }
+    static P3 QuadNormal(const std::vector<P3> &pos, const std::array<int, 4> &v)
+    {
+        const P3 corners[4] = {pos[v[0]], pos[v[1]], pos[v[2]], pos[v[3]]};
+        return VectorArea(corners, 4);
+    }
+
+    // p moved onto the input surface, unless the input there faces away from `normal` (a thin part).
+    static P3 OnSurface(InputSurface<MeshType> &surface, const P3 &p, const P3 &normal)
+    {
+        CoordType closest;
+        const FaceType *f = surface.Closest(CoordType::Construct(p), closest);
+        if (!f || P3::Construct(f->cN()) * normal <= 0) return p;
+        return P3::Construct(closest);
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif
