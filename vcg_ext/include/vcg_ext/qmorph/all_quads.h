@@ -64,10 +64,13 @@ public:
                 if (!it.second) it.first->second[1] = int(i);
             }
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
+        const size_t oldVertices = pos.size();
+        std::vector<P3> straight;  // per new point, its place before it was moved onto the surface
         std::unordered_map<uint64_t, int> midpoint;
         for (const auto &e : sides) {
             const int a = int(e.first >> 32), b = int(e.first & 0xffffffffu);
             P3 mid = (pos[a] + pos[b]) * 0.5;
+            straight.push_back(mid);
             const bool sharp = e.second[1] < 0 || normal[e.second[0]] * normal[e.second[1]] < creaseCos;
             if (!sharp && !selected.count(e.first)) mid = OnSurface(surface, mid, normal[e.second[0]]);
             midpoint[e.first] = int(pos.size());
@@ -85,21 +88,34 @@ public:
             for (int k = 0; k < p.size; ++k) centre += pos[p.v[k]];
             centre /= double(p.size);
             const int c = int(pos.size());
-            pos.push_back(centre);
-            const size_t first = quads.size();
+            straight.push_back(centre);
+            pos.push_back(OnSurface(surface, centre, normal[i]));
             for (int k = 0; k < p.size; ++k) {
                 const int prev = p.v[(k + p.size - 1) % p.size], here = p.v[k], next = p.v[(k + 1) % p.size];
                 quads.push_back({{here, midpoint[EdgeKey(here, next)], c, midpoint[EdgeKey(prev, here)]}, p.quality});
             }
-            // the centre onto the surface unless a new quad would turn over there
-            pos[c] = OnSurface(surface, centre, normal[i]);
-            bool up = true;
-            for (size_t q = first; q < quads.size(); ++q) up = up && QuadNormal(pos, quads[q].v) * normal[i] > 0;
-            if (!up) pos[c] = centre;
+        }
+        // a new quad turned against the input surface's normal: its new points go back to their
+        // straight places (the parent face is not turned, so neither are its straight quarters)
+        for (int round = 0; round < kUnprojectRounds; ++round) {
+            int reverted = 0;
+            for (const NewQuad &q : quads) {
+                const P3 corners[4] = {pos[q.v[0]], pos[q.v[1]], pos[q.v[2]], pos[q.v[3]]};
+                P3 n = VectorArea(corners, 4);
+                const P3 centroid = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
+                if (n.Norm() > 0 && surface.NormalUnder(centroid, n / n.Norm()) * n > 0) continue;
+                for (int k = 1; k < 4; ++k) {
+                    const int x = q.v[k] - int(oldVertices);
+                    if (pos[q.v[k]] != straight[x]) {
+                        pos[q.v[k]] = straight[x];
+                        ++reverted;
+                    }
+                }
+            }
+            if (!reverted) break;
         }
 
         // m rebuilt: the new points appended, two triangles (faux diagonal) per quad
-        const size_t oldVertices = m.vert.size();
         auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, pos.size() - oldVertices);
         for (size_t i = oldVertices; i < pos.size(); ++i, ++vi) vi->P() = CoordType::Construct(pos[i]);
         for (FaceType &f : m.face) vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
@@ -132,6 +148,10 @@ public:
     }
 
 private:
+    // Rounds of putting back new points whose quads turned over on the surface (a round can turn
+    // a neighbour's quad back only by moving points it shares).
+    static constexpr int kUnprojectRounds = 4;
+
     struct Polygon {
         int v[4];
         int size;
