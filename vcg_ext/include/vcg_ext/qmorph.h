@@ -203,8 +203,10 @@ private:
             if (!in.hasFront) ++res.patchesWithoutFront;
             qmorph::MixedMesh mm;
             mm.Build(in.points, in.tris, in.cut);
-            if (par.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
-                mm.judge = [&input](const P3 &p, const P3 &own) { return input.NormalUnder(p, own); };
+            if (par.targetEdgeLength > 0) {  // the patch is the re-meshed surface: the input judges
+                const double side = in.reversed ? -1 : 1;  // the patch is read the other way round
+                mm.judge = [&input, side](const P3 &p, const P3 &own) { return input.NormalUnder(p, own * side) * side; };
+            }
             mm.SetKeys(in.globalOf);
             SurfaceProjector surface;
             surface.Build(in.points, in.tris);
