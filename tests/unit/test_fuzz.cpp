@@ -8,6 +8,7 @@
 //
 // Bounded by count (CTest): kDefaultRuns cases. Each case has its own seed, printed on failure.
 // Longer run (README): QMF_FUZZ_RUNS=20000 QMF_FUZZ_SEED=100000 build/tests/unit_tests --gtest_filter='Fuzz.*'
+// (QMF_FUZZ_MAX_FAILING=n: stop after n failing cases, 5 by default)
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -498,8 +499,9 @@ TEST(Fuzz, FourStepsSurviveRandomInput)
     const unsigned seed0 = unsigned(EnvInt("QMF_FUZZ_SEED", int(kDefaultSeed)));
     Tally tally;
     const ::testing::TestResult &result = *::testing::UnitTest::GetInstance()->current_test_info()->result();
-    int failures = 0;  // failing cases: the run stops after a few (each prints its seed)
-    for (int i = 0; i < runs && failures < 5; ++i) {
+    const int maxFailing = EnvInt("QMF_FUZZ_MAX_FAILING", 5);  // the run stops after that many failing cases
+    int failures = 0;                                          // (each prints the seed that replays it)
+    for (int i = 0; i < runs && failures < maxFailing; ++i) {
         const int partsBefore = result.total_part_count();
         const unsigned seed = seed0 + unsigned(i);
         Rng rng(seed);
@@ -530,10 +532,10 @@ TEST(Fuzz, FourStepsSurviveRandomInput)
         FuzzQMorph(m, rng, tally);
         failures += result.total_part_count() > partsBefore;
     }
-    std::printf("[ fuzz ] %d cases from seed %u: VSA %d/%d succeeded, smoothing %d/%d, splitting %d/%d, Q-Morph %d/%d "
+    std::printf("[ fuzz ] %d cases from seed %u (%d failing): VSA %d/%d succeeded, smoothing %d/%d, splitting %d/%d, Q-Morph %d/%d "
                 "(the rest refused with an error, the mesh unchanged); %d quads with a scaled Jacobian <= 0 in %d cases; %d faces "
                 "flipped with crease cutting above 90 degrees\n",
-                runs, seed0, tally.ok[0], tally.runs[0], tally.ok[1], tally.runs[1], tally.ok[2], tally.runs[2], tally.ok[3],
+                tally.runs[0], seed0, failures, tally.ok[0], tally.runs[0], tally.ok[1], tally.runs[1], tally.ok[2], tally.runs[2], tally.ok[3],
                 tally.runs[3], tally.invertedQuads, tally.casesWithInvertedQuads, tally.flippedWithoutCreases);
     // The run must reach every step's success path, else it tests only the refusals.
     if (runs >= kDefaultRuns) {
