@@ -57,15 +57,17 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
     const QString name = filterName(FP_VSA_SEGMENT);
     MeshModel &mm = *md.mm();
 
+    // The enum index is checked before it becomes a SeedingMode (an enum holding a value outside its
+    // enumerators is undefined behaviour: UBSan reported it for an index out of range).
+    const int mode = par.getEnum("SeedingMode");
+    if (mode != VSA::ThresholdSeeding && mode != VSA::FixedRegionCount) return fail(name, "unknown seeding mode");
     VSA::Params p;
-    p.mode = VSA::SeedingMode(par.getEnum("SeedingMode"));
+    p.mode = VSA::SeedingMode(mode);
     p.initialSeeds = par.getInt("InitialSeeds");
     p.thresholdAngleDeg = par.getFloat("ThresholdAngle");
     p.maxRegions = par.getInt("MaxRegions");
     p.maxIterations = par.getInt("MaxIterations");
     p.randomSeed = uint32_t(par.getInt("RandomSeed"));
-    if (p.mode != VSA::ThresholdSeeding && p.mode != VSA::FixedRegionCount)
-        return fail(name, "unknown seeding mode");
     // The core checks the mesh and the parameters first and leaves the mesh as it is on error; it
     // needs face-face adjacency and writes the face quality, enabled here and dropped on error.
     const int added = (MeshModel::MM_FACEFACETOPO | MeshModel::MM_FACEQUALITY) & ~mm.dataMask();

@@ -18,6 +18,7 @@
 #include <wrap/gl/glu_tesselator.h>  // import_off.h tessellates with GLU when GL is included
 #include <wrap/io_trimesh/import_off.h>
 
+#include "mesh_snapshot.h"
 #include "test_mesh.h"
 
 namespace qmf_test {
@@ -28,49 +29,20 @@ const QString kSmooth = "Smooth Region Boundaries";
 const QString kSplit = "Split Triangles along Front";
 const QString kQMorph = "Q-Morph Quad Conversion";
 
-// Everything a filter could change on a layer, in comparable form.
+// Everything a filter could change on a layer, in comparable form: the data mask and the mesh
+// (face quality and colour when the mask holds them).
 struct MeshSnapshot {
     int dataMask = 0;
-    std::vector<std::array<float, 3>> coords;
-    std::vector<std::array<int, 3>> faces;
-    std::vector<int> faceFlags;
-    std::vector<int> vertFlags;
-    std::vector<float> faceQuality;
-    std::vector<unsigned> faceColor;
-    std::vector<std::array<int, 2>> edges;
+    Snapshot mesh;
 
     static MeshSnapshot Of(MeshModel &mm)
     {
         MeshSnapshot s;
         s.dataMask = mm.dataMask();
-        CMeshO &m = mm.cm;
-        for (auto &v : m.vert) {
-            s.coords.push_back({v.P()[0], v.P()[1], v.P()[2]});
-            s.vertFlags.push_back(v.Flags());
-        }
-        for (auto &f : m.face) {
-            s.faces.push_back({int(vcg::tri::Index(m, f.V(0))), int(vcg::tri::Index(m, f.V(1))), int(vcg::tri::Index(m, f.V(2)))});
-            s.faceFlags.push_back(f.Flags());
-            if (mm.hasDataMask(MeshModel::MM_FACEQUALITY)) s.faceQuality.push_back(f.Q());
-            if (mm.hasDataMask(MeshModel::MM_FACECOLOR)) {
-                auto c = f.C();
-                s.faceColor.push_back(unsigned(c[0]) | unsigned(c[1]) << 8 | unsigned(c[2]) << 16 | unsigned(c[3]) << 24);
-            }
-        }
-        for (auto &e : m.edge) s.edges.push_back({int(vcg::tri::Index(m, e.V(0))), int(vcg::tri::Index(m, e.V(1)))});
+        s.mesh = Snapshot::Of(mm.cm, mm.hasDataMask(MeshModel::MM_FACEQUALITY), mm.hasDataMask(MeshModel::MM_FACECOLOR));
         return s;
     }
-    // NaN-safe equality of the coordinates (bitwise).
-    bool operator==(const MeshSnapshot &o) const
-    {
-        if (coords.size() != o.coords.size()) return false;
-        for (size_t i = 0; i < coords.size(); ++i)
-            for (int k = 0; k < 3; ++k)
-                if (std::memcmp(&coords[i][k], &o.coords[i][k], sizeof(float)) != 0) return false;
-        return dataMask == o.dataMask && faces == o.faces && faceFlags == o.faceFlags && vertFlags == o.vertFlags &&
-               std::memcmp(faceQuality.data(), o.faceQuality.data(), faceQuality.size() * sizeof(float)) == 0 &&
-               faceQuality.size() == o.faceQuality.size() && faceColor == o.faceColor && edges == o.edges;
-    }
+    bool operator==(const MeshSnapshot &o) const { return dataMask == o.dataMask && mesh == o.mesh; }
 };
 
 struct FilterRun {

@@ -268,11 +268,13 @@ private:
                 r.hasFront = in.hasFront;
                 qmorph::MixedMesh mm;
                 mm.Build(in.points, in.tris, in.cut);
-                if (res.targetEdgeLength > 0)  // the patch is the re-meshed surface: the input judges
-                    mm.judge = [&input, &inputMutex](const P3 &p, const P3 &own) {
+                if (res.targetEdgeLength > 0) {  // the patch is the re-meshed surface: the input judges
+                    const double side = in.reversed ? -1 : 1;  // the patch is read the other way round
+                    mm.judge = [&input, &inputMutex, side](const P3 &p, const P3 &own) {
                         std::lock_guard<std::mutex> lock(inputMutex);
-                        return input.NormalUnder(p, own);
+                        return input.NormalUnder(p, own * side) * side;
                     };
+                }
                 mm.SetKeys(in.globalOf);
                 SurfaceProjector surface;
                 surface.Build(in.points, in.tris);

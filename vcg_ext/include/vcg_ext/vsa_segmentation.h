@@ -137,9 +137,13 @@ public:
         return e;
     }
 
+    // From the corner of lowest address on, so a flipped face gives exactly the opposite normal
+    // (whichever corner the flip starts it at): the errors, hence the regions, do not depend on
+    // the orientation.
     static void AreaNormal(const FaceType &f, double &area, Vec &normal)
     {
-        Vec a = Vec::Construct(f.cV(0)->cP()), b = Vec::Construct(f.cV(1)->cP()), c = Vec::Construct(f.cV(2)->cP());
+        const int r = f.cV(1) < f.cV(0) ? (f.cV(2) < f.cV(1) ? 2 : 1) : (f.cV(2) < f.cV(0) ? 2 : 0);
+        Vec a = Vec::Construct(f.cV(r)->cP()), b = Vec::Construct(f.cV((r + 1) % 3)->cP()), c = Vec::Construct(f.cV((r + 2) % 3)->cP());
         Vec cr = (b - a) ^ (c - a);
         double len = cr.Norm();
         area = 0.5 * len;
@@ -152,9 +156,9 @@ private:
         double error;
         int face;
         int region;
-        bool operator<(const QueueItem &o) const  // min-heap on error, ties by face index
-        {
-            return error != o.error ? error > o.error : face > o.face;
+        bool operator<(const QueueItem &o) const  // min-heap on error, ties by face index, then region
+        {                                         // (a total order: the push order never matters)
+            return error != o.error ? error > o.error : face != o.face ? face > o.face : region > o.region;
         }
     };
 

@@ -71,11 +71,17 @@ public:
     };
 
     // Why the boundaries of `m` cannot be smoothed with `p`, or "" (the region ids are checked by
-    // Smooth: integral labels come from RegionIds).
+    // Smooth: integral labels come from RegionIds). Unmerged vertices are named with their fix:
+    // else a triangle soup would only be "regions without a boundary between them".
     static std::string Check(const MeshType &m, const Params &p)
     {
-        const std::string why = p.Validate();
-        return why.empty() ? MeshChecks<MeshType>::CheckFacesAndCoordinates(m) : why;
+        std::string why = p.Validate();
+        if (why.empty()) why = MeshChecks<MeshType>::CheckFacesAndCoordinates(m);
+        if (why.empty()) {
+            const MeshCheckReport r = MeshChecks<MeshType>::Inspect(m);
+            if (r.duplicateVertices) why = r.Describe(MeshCheckReport::DuplicateVertices);
+        }
+        return why;
     }
 
     // faceRegion: region id per face index (deleted faces ignored). The mesh is not modified.

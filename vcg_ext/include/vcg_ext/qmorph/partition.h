@@ -5,6 +5,11 @@
 // non-front edges. Node sectors: the corners around a vertex joined across non-front edges; a
 // vertex the front passes through has one sector per side, and each sector becomes its own node
 // of the patch mesh (so slits, annuli and patches touching themselves need no special case).
+//
+// Orientation independence: every face is read from its lowest vertex index on, and the faces of a
+// component with a negative orientation sign (OrientationSigns) are read reversed, so a mesh and
+// its consistently flipped copy (whatever vertex each flipped face starts at) give the same patches
+// and every later decision the same: the output is the same mesh, written back mirrored.
 #ifndef VCG_EXT_QMORPH_PARTITION_H
 #define VCG_EXT_QMORPH_PARTITION_H
 
@@ -36,11 +41,15 @@ struct PatchInput {
     std::vector<int> home;                  // per local node: a triangle holding it (for projection)
     float quality = 0;                      // the region id covering most of the patch's area
     bool hasFront = false;
+    bool reversed = false;                  // the input's faces are the other way round (write back mirrored)
 };
 
 struct FrontPartition {
     std::vector<int> faceIdx;                    // live face -> index in the mesh's face vector
-    std::vector<std::array<int, 3>> tri;         // per live face: its vertex indices
+    std::vector<std::array<int, 3>> tri;         // per live face: its vertex indices, lowest first, read
+                                                 // reversed where `reversed` (see the top of the file)
+    std::vector<char> reversed;                  // per live face: its component is read reversed
+    std::vector<char> inputEdge;                 // per half-edge 3f+k: the face's own edge index there
     std::vector<char> cut;                       // per half-edge 3f+k: on the front
     std::vector<int> patchOf;                    // per live face: its patch (the patch's lowest face)
     std::vector<int> sectorOf;                   // per corner 3f+k: its node sector (lowest corner)
@@ -58,9 +67,18 @@ struct FrontPartition {
             if (!m.face[i].IsD()) {
                 faceIdx.push_back(int(i));
                 const auto &f = m.face[i];
-                tri.push_back({int(vcg::tri::Index(m, f.cV(0))), int(vcg::tri::Index(m, f.cV(1))), int(vcg::tri::Index(m, f.cV(2)))});
+                const std::array<int, 3> t{{int(vcg::tri::Index(m, f.cV(0))), int(vcg::tri::Index(m, f.cV(1))), int(vcg::tri::Index(m, f.cV(2)))}};
+                const int r = int(std::min_element(t.begin(), t.end()) - t.begin());
+                tri.push_back({t[r], t[(r + 1) % 3], t[(r + 2) % 3]});
+                for (int k = 0; k < 3; ++k) inputEdge.push_back(char((r + k) % 3));
             }
         const int F = int(tri.size());
+        reversed = OrientationSigns(m);
+        for (int f = 0; f < F; ++f)
+            if (reversed[f]) {  // (a, b, c) -> (a, c, b): edge k runs along the input's edge 2 - k
+                std::swap(tri[f][1], tri[f][2]);
+                std::swap(inputEdge[3 * f], inputEdge[3 * f + 2]);
+            }
         cut.assign(3 * F, 0);
         std::vector<int> twin(3 * F, -1);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
@@ -68,7 +86,7 @@ struct FrontPartition {
         for (int e = 0; e < edges.Count(); ++e) {
             const int n = edges.Size(e), *h = edges.Begin(e);
             bool selected = false;
-            for (int k = 0; k < n; ++k) selected = selected || m.face[faceIdx[h[k] / 3]].IsFaceEdgeS(h[k] % 3);
+            for (int k = 0; k < n; ++k) selected = selected || m.face[faceIdx[h[k] / 3]].IsFaceEdgeS(inputEdge[h[k]]);
             if (selected) selectedPairs.insert(EdgeKey(EdgePairing::From(tri, h[0]), EdgePairing::To(tri, h[0])));
             if (n == 2) {
                 twin[h[0]] = h[1];
@@ -151,6 +169,7 @@ struct FrontPartition {
         for (auto &qv : qualityArea)
             if (qv.second > bestArea) { bestArea = qv.second; in.quality = qv.first; }
         for (char c : in.cut) in.hasFront = in.hasFront || c;
+        in.reversed = begin < end && reversed[order[begin]];
         for (size_t i = begin; i < end; ++i)
             for (int k = 0; k < 3; ++k) localOfSector[sectorOf[3 * order[i] + k]] = -1;
         return in;
@@ -158,6 +177,48 @@ struct FrontPartition {
 
 private:
     std::vector<int> localOfSector;  // scratch of Extract: local node per sector, -1 outside the patch
+
+    // Per live face: whether its edge-connected component is read reversed. The sign of a
+    // component is that of its volume seen from a point inside, else (zero: flat) of the largest
+    // coordinate of its vector area; both are sums over the faces read lowest vertex first, so a
+    // flipped copy gives exactly the opposite sums (and outward closed meshes are read as they are).
+    template <class MeshType>
+    std::vector<char> OrientationSigns(const MeshType &m) const
+    {
+        const int F = int(tri.size());
+        IndexUnionFind comp(F);
+        const EdgePairing::Groups edges = EdgePairing::Group(tri);
+        for (int e = 0; e < edges.Count(); ++e)
+            for (int k = 1; k < edges.Size(e); ++k) comp.Unite(edges.Begin(e)[0] / 3, edges.Begin(e)[k] / 3);
+        auto pos = [&](int v) { return P3::Construct(m.vert[v].cP()); };
+        std::vector<P3> centroid(F, P3(0, 0, 0)), area(F, P3(0, 0, 0));
+        std::vector<double> count(F, 0), volume(F, 0);
+        for (int f = 0; f < F; ++f) {  // the mean of the faces' lowest vertices (summed the same way both ways round)
+            const int c = comp.Find(f);
+            centroid[c] += pos(tri[f][0]);
+            count[c] += 1;
+        }
+        for (int f = 0; f < F; ++f) {
+            const int c = comp.Find(f);
+            const P3 o = centroid[c] / count[c];
+            const P3 a = pos(tri[f][0]) - o, b = pos(tri[f][1]) - o, d = pos(tri[f][2]) - o;
+            volume[c] += a * (b ^ d);
+            area[c] += (pos(tri[f][1]) - pos(tri[f][0])) ^ (pos(tri[f][2]) - pos(tri[f][0]));
+        }
+        std::vector<char> out(F, 0);
+        for (int f = 0; f < F; ++f) {
+            const int c = comp.Find(f);
+            double sign = volume[c];
+            if (sign == 0) {
+                const P3 &a = area[c];
+                sign = a[0];
+                if (std::fabs(a[1]) > std::fabs(sign)) sign = a[1];
+                if (std::fabs(a[2]) > std::fabs(sign)) sign = a[2];
+            }
+            out[f] = sign < 0;
+        }
+        return out;
+    }
 
     // Sharp edges inside a patch (VSA regions may hold creases up to twice the threshold angle)
     // are cut like front edges: quads then follow them instead of folding over them.

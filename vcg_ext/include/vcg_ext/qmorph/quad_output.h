@@ -81,8 +81,13 @@ public:
                 poly.v[k] = outId[corner[k]];
             }
             poly.diagonal = poly.size == 4 ? PreferredDiagonal(mm, surface, home, corner) : kEitherDiagonal;
+            P3 normal = mm.InputFaceNormal(f, true);
+            if (in.reversed) {  // back to the input's orientation: same first corner, same diagonal
+                std::reverse(poly.v.begin() + 1, poly.v.begin() + poly.size);
+                normal = -normal;
+            }
             out.polygons.push_back(poly);
-            out.referenceNormals.push_back(mm.InputFaceNormal(f, true));
+            out.referenceNormals.push_back(normal);
         }
         return out;
     }
