@@ -5,6 +5,7 @@
 #define VCG_EXT_QUAD_QUALITY_H
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -121,8 +122,40 @@ public:
         return r;
     }
 
-    // Polygons of a vcg triangle mesh in MeshLab's polygonal form: two triangles sharing a faux
-    // edge are one quad (needs face-face adjacency). Other faux configurations stay triangles.
+    // Walks the polygons of a vcg triangle mesh in MeshLab's polygonal form: two triangles sharing a
+    // faux edge are one quad (needs face-face adjacency); other faux configurations stay triangles.
+    // visit(first, corners, n): the polygon's first triangle, its n (3 or 4) corners as indices
+    // into m.vert, counter-clockwise.
+    template <class MeshType, class Visit>
+    static void ForEachFauxPolygon(MeshType &m, Visit visit)
+    {
+        std::vector<char> done(m.face.size(), 0);
+        for (size_t i = 0; i < m.face.size(); ++i) {
+            auto &f = m.face[i];
+            if (f.IsD() || done[i]) continue;
+            done[i] = 1;
+            int faux = -1, count = 0;
+            for (int k = 0; k < 3; ++k)
+                if (f.IsF(k)) { faux = k; ++count; }
+            auto V = [&](typename MeshType::FaceType &g, int k) { return int(vcg::tri::Index(m, g.V(k))); };
+            if (count == 1) {
+                auto *g = f.FFp(faux);
+                int j = f.FFi(faux);
+                size_t gi = vcg::tri::Index(m, g);
+                int gFaux = 0;
+                for (int k = 0; k < 3; ++k) gFaux += g->IsF(k);
+                if (g != &f && !done[gi] && gFaux == 1 && g->IsF(j)) {
+                    done[gi] = 1;
+                    // quad: f's vertices from the far side of the faux edge, then g's opposite vertex
+                    visit(f, std::array<int, 4>{{V(f, (faux + 1) % 3), V(f, (faux + 2) % 3), V(f, faux), V(*g, (j + 2) % 3)}}, 4);
+                    continue;
+                }
+            }
+            visit(f, std::array<int, 4>{{V(f, 0), V(f, 1), V(f, 2), -1}}, 3);
+        }
+    }
+
+    // The polygons of a vcg triangle mesh in MeshLab's polygonal form (ForEachFauxPolygon).
     template <class MeshType>
     static PolygonMesh FromFauxMesh(MeshType &m)
     {
@@ -133,30 +166,11 @@ public:
                 vid[i] = int(pm.points.size());
                 pm.points.push_back(P3::Construct(m.vert[i].cP()));
             }
-        std::vector<char> done(m.face.size(), 0);
-        for (size_t i = 0; i < m.face.size(); ++i) {
-            auto &f = m.face[i];
-            if (f.IsD() || done[i]) continue;
-            done[i] = 1;
-            int faux = -1, count = 0;
-            for (int k = 0; k < 3; ++k)
-                if (f.IsF(k)) { faux = k; ++count; }
-            auto V = [&](typename MeshType::FaceType &g, int k) { return vid[vcg::tri::Index(m, g.V(k))]; };
-            if (count == 1) {
-                auto *g = f.FFp(faux);
-                int j = f.FFi(faux);
-                size_t gi = vcg::tri::Index(m, g);
-                int gFaux = 0;
-                for (int k = 0; k < 3; ++k) gFaux += g->IsF(k);
-                if (g != &f && !done[gi] && gFaux == 1 && g->IsF(j)) {
-                    done[gi] = 1;
-                    // quad: f's vertices from the far side of the faux edge, then g's opposite vertex
-                    pm.faces.push_back({V(f, (faux + 1) % 3), V(f, (faux + 2) % 3), V(f, faux), V(*g, (j + 2) % 3)});
-                    continue;
-                }
-            }
-            pm.faces.push_back({V(f, 0), V(f, 1), V(f, 2)});
-        }
+        ForEachFauxPolygon(m, [&](typename MeshType::FaceType &, const std::array<int, 4> &corners, int n) {
+            std::vector<int> face;
+            for (int k = 0; k < n; ++k) face.push_back(vid[corners[k]]);
+            pm.faces.push_back(face);
+        });
         return pm;
     }
 };

@@ -25,6 +25,7 @@
 #include <vcg_ext/common/edge_key.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/polygon_geometry.h>
+#include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
 namespace qmorph {
@@ -130,8 +131,7 @@ public:
             // the diagonal from the old corner to the face centre: no other face has that edge (the
             // other diagonal, between two midpoints, would be an edge twice around a doublet node)
             const std::array<int, 4> &v = q.v;
-            const int s = 0;
-            const std::array<int, 3> t1{v[s], v[s + 1], v[(s + 2) % 4]}, t2{v[s], v[(s + 2) % 4], v[(s + 3) % 4]};
+            const std::array<int, 3> t1{v[0], v[1], v[2]}, t2{v[0], v[2], v[3]};
             for (const std::array<int, 3> &t : {t1, t2}) {
                 FaceType &f = *fi++;
                 for (int k = 0; k < 3; ++k) f.V(k) = &m.vert[t[k]];
@@ -140,7 +140,7 @@ public:
                 for (int k = 0; k < 3; ++k)
                     if (front.count(EdgeKey(t[k], t[(k + 1) % 3]))) f.SetFaceEdgeS(k);
             }
-            (fi - 2)->SetF(2);  // t1's edge v[s+2] - v[s] and t2's edge v[s] - v[s+2]: the diagonal
+            (fi - 2)->SetF(2);  // t1's edge v[2] - v[0] and t2's edge v[0] - v[2]: the diagonal
             (fi - 1)->SetF(0);
         }
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
@@ -153,7 +153,7 @@ private:
     static constexpr int kUnprojectRounds = 4;
 
     struct Polygon {
-        int v[4];
+        std::array<int, 4> v;  // indices into m.vert, counter-clockwise
         int size;
         float quality;
     };
@@ -163,36 +163,14 @@ private:
         return EdgeKey(int(vcg::tri::Index(m, a)), int(vcg::tri::Index(m, b)));
     }
 
-    // The faces of m as polygons: a faux edge joins two triangles into a quad.
+    // The faces of m as polygons (QuadQuality::ForEachFauxPolygon), with their region ids.
     static std::vector<Polygon> Gather(MeshType &m)
     {
         const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
         std::vector<Polygon> polygons;
-        std::vector<char> done(m.face.size(), 0);
-        auto V = [&](FaceType &f, int k) { return int(vcg::tri::Index(m, f.V(k))); };
-        for (size_t i = 0; i < m.face.size(); ++i) {
-            FaceType &f = m.face[i];
-            if (f.IsD() || done[i]) continue;
-            done[i] = 1;
-            const float q = hasQuality ? float(f.Q()) : 0.f;
-            int faux = -1, count = 0;
-            for (int k = 0; k < 3; ++k)
-                if (f.IsF(k)) {
-                    faux = k;
-                    ++count;
-                }
-            if (count == 1) {
-                FaceType *g = f.FFp(faux);
-                const int j = f.FFi(faux);
-                const size_t gi = vcg::tri::Index(m, g);
-                if (g != &f && !done[gi] && g->IsF(j)) {
-                    done[gi] = 1;
-                    polygons.push_back({{V(f, (faux + 1) % 3), V(f, (faux + 2) % 3), V(f, faux), V(*g, (j + 2) % 3)}, 4, q});
-                    continue;
-                }
-            }
-            polygons.push_back({{V(f, 0), V(f, 1), V(f, 2), -1}, 3, q});
-        }
+        QuadQuality::ForEachFauxPolygon(m, [&](FaceType &f, const std::array<int, 4> &corners, int n) {
+            polygons.push_back({corners, n, hasQuality ? float(f.Q()) : 0.f});
+        });
         return polygons;
     }
 

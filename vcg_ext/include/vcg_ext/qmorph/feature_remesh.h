@@ -66,11 +66,7 @@ public:
         SegmentGrid features(L);
         std::vector<char> isFront;
         MarkFeatures(m, creaseAngleDeg, features, isFront, st);
-        auto isFrontEdge = [&](const P3 &a, const P3 &b) {
-            double d;
-            const int id = features.Nearest((a + b) * 0.5, d);
-            return id >= 0 && isFront[id];
-        };
+        auto isFrontEdge = [&](const P3 &a, const P3 &b) { return OnFront(features, isFront, a, b); };
 
         typename Remesher::Params p;
         p.SetTargetLen(ScalarType(L));
@@ -206,6 +202,14 @@ private:
             }
     }
 
+    // Whether the feature edge a-b lies on an original front edge (the one nearest its midpoint).
+    static bool OnFront(const SegmentGrid &grid, const std::vector<char> &isFront, const P3 &a, const P3 &b)
+    {
+        double d;
+        const int id = grid.Nearest((a + b) * 0.5, d);
+        return id >= 0 && isFront[id];
+    }
+
     // Every flagged output edge lies on one original feature edge: front when that one was.
     static void SelectFront(MeshType &m, const SegmentGrid &grid, const std::vector<char> &isFront, Stats &st)
     {
@@ -215,12 +219,7 @@ private:
             for (int i = 0; i < 3; ++i) {
                 FaceType *g = f.FFp(i);
                 if (g < &f) continue;
-                bool front = false;
-                if (IsFeature(f, i)) {
-                    double d;
-                    const int id = grid.Nearest((Pos(f.V0(i)) + Pos(f.V1(i))) * 0.5, d);
-                    front = id >= 0 && isFront[id];
-                }
+                const bool front = IsFeature(f, i) && OnFront(grid, isFront, Pos(f.V0(i)), Pos(f.V1(i)));
                 const int j = f.FFi(i);
                 if (front) {
                     f.SetFaceEdgeS(i);
