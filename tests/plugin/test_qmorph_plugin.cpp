@@ -84,12 +84,7 @@ TEST(QMorphPlugin, TheGuiKeepsTheShadingOfTheMesh)
     for (bool flat : {true, false}) {
         PluginHarness h;
         AddCubeWithCreasesSelected(h);
-        MLRenderingData::RendAtts shading;
-        shading[A::ATT_VERTPOSITION] = true;
-        shading[flat ? A::ATT_FACENORMAL : A::ATT_VERTNORMAL] = true;
-        const MLRenderingData::RendAtts after = SolidAttributesAfter(h, kQMorph, shading);
-        EXPECT_EQ(after[A::ATT_FACENORMAL], flat) << (flat ? "flat" : "smooth") << " shading";
-        EXPECT_EQ(after[A::ATT_VERTNORMAL], !flat) << (flat ? "flat" : "smooth") << " shading";
+        const MLRenderingData::RendAtts after = ExpectShadingKept(h, kQMorph, flat);
         EXPECT_FALSE(after[A::ATT_VERTCOLOR]);
     }
 }

@@ -354,12 +354,7 @@ TEST(SplitPlugin, TheGuiKeepsTheShadingOfTheMesh)
         PluginHarness h;
         TMesh cube, poly;
         MakeSectionedCube(h, cube, poly);
-        MLRenderingData::RendAtts shading;
-        shading[A::ATT_VERTPOSITION] = true;
-        shading[flat ? A::ATT_FACENORMAL : A::ATT_VERTNORMAL] = true;
-        const MLRenderingData::RendAtts after = SolidAttributesAfter(h, kSplit, shading);
-        EXPECT_EQ(after[A::ATT_FACENORMAL], flat) << (flat ? "flat" : "smooth") << " shading";
-        EXPECT_EQ(after[A::ATT_VERTNORMAL], !flat) << (flat ? "flat" : "smooth") << " shading";
+        const MLRenderingData::RendAtts after = ExpectShadingKept(h, kSplit, flat);
         EXPECT_TRUE(after[A::ATT_FACECOLOR]);
         EXPECT_FALSE(after[A::ATT_VERTCOLOR]);
     }

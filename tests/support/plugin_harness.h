@@ -175,6 +175,20 @@ inline MLRenderingData::RendAtts SolidAttributesAfter(PluginHarness &h, const QS
     return after;
 }
 
+// Applies `filter` to a layer drawn with flat (face normals) or smooth (vertex normals) shading and
+// checks the GUI keeps that shading; returns the attributes it would draw, for further checks.
+inline MLRenderingData::RendAtts ExpectShadingKept(PluginHarness &h, const QString &filter, bool flat)
+{
+    typedef MLRenderingData::ATT_NAMES A;
+    MLRenderingData::RendAtts shading;
+    shading[A::ATT_VERTPOSITION] = true;
+    shading[flat ? A::ATT_FACENORMAL : A::ATT_VERTNORMAL] = true;
+    const MLRenderingData::RendAtts after = SolidAttributesAfter(h, filter, shading);
+    EXPECT_EQ(after[A::ATT_FACENORMAL], flat) << (flat ? "flat" : "smooth") << " shading";
+    EXPECT_EQ(after[A::ATT_VERTNORMAL], !flat) << (flat ? "flat" : "smooth") << " shading";
+    return after;
+}
+
 }  // namespace qmf_test
 
 #endif

@@ -178,6 +178,14 @@ Figures RemeshAndCheck(TMesh &m, double L, const std::string &name)
     return fig;
 }
 
+// The CAD-style test meshes must really be slivers: over 95% of the faces with aspect ratio above 20.
+void AssertMadeOfSlivers(const TMesh &m)
+{
+    double thin = 0, median = 0;
+    SliverStats(m, 20, thin, median);
+    ASSERT_GT(thin, 0.95) << "the test mesh must be made of slivers (median aspect ratio " << median << ")";
+}
+
 }  // namespace
 
 // A 2 x 1 x 1 box whose long sides are strips of 1-high, 0.04-wide slivers (aspect ratio 25),
@@ -186,9 +194,7 @@ TEST(FeatureRemesh, SliverBoxBecomesQuads)
 {
     TMesh m;
     MakeSliverBox(m, 2.f, 1.f, 50);
-    double thin = 0, median = 0;
-    SliverStats(m, 20, thin, median);
-    ASSERT_GT(thin, 0.95) << "the test mesh must be made of slivers (median aspect ratio " << median << ")";
+    ASSERT_NO_FATAL_FAILURE(AssertMadeOfSlivers(m));
     ASSERT_EQ(SelectCreases(m, 45), 4 * 50 + 8) << "the 12 box edges: 4 in 50 pieces, 8 whole";
     RemeshAndCheck(m, 0.04, "sliver box");
 }
@@ -199,9 +205,7 @@ TEST(FeatureRemesh, SliverCylinderBecomesQuads)
 {
     TMesh m;
     MakeSliverCylinder(m, 1.f, 3.f, 64);
-    double thin = 0, median = 0;
-    SliverStats(m, 20, thin, median);
-    ASSERT_GT(thin, 0.95) << "the test mesh must be made of slivers (median aspect ratio " << median << ")";
+    ASSERT_NO_FATAL_FAILURE(AssertMadeOfSlivers(m));
     ASSERT_EQ(SelectCreases(m, 45), 2 * 64) << "the two rims";
     RemeshAndCheck(m, 2 * M_PI / 64, "sliver cylinder");
 }
