@@ -257,6 +257,7 @@ void Usage()
         "  --remesh-diag P     Q-Morph re-meshes first to P % of the bounding-box diagonal\n"
         "  --no-cleanup, --no-smoothing  Q-Morph without its topological clean-up / tangent-plane smoothing\n"
         "  --no-preserve       Q-Morph with 'Preserve initial front' off\n"
+        "  --no-remesh         Q-Morph on the split mesh's own triangles ('Re-mesh first' off)\n"
         "  --scaling NAME      only the scaling run: NAME refined by midpoint steps (--scaling-steps, default 0,1,2:\n"
         "                      1x, 4x, 16x), each with Q-Morph on 1 and 2 threads (--scaling-threads, default 1,2)\n"
         "  --plot FILE.png     with --scaling: gnuplot PNG of time per face against faces (data in FILE.png.dat)\n");
@@ -308,11 +309,18 @@ struct PipelineRun {
 
 // Runs the 4 stages on a copy of `input`; `work` ends as the Q-Morph output, `splitOut` (if given)
 // receives the split mesh (Q-Morph's input).
-// Q-Morph options of the whole run (--remesh, --no-preserve); defaults otherwise.
-QM::Params gQMorphParams;
+// Q-Morph options of the whole run (--remesh, --no-remesh, --no-preserve); the filter's defaults
+// otherwise (it re-meshes first at the automatic length, unlike the core's Params).
+QM::Params PluginDefaults()
+{
+    QM::Params p;
+    p.remeshFirst = true;
+    return p;
+}
+QM::Params gQMorphParams = PluginDefaults();
 double gRemeshFactor = 0;  // > 0: Q-Morph re-meshes to this times the mean edge length of its input
 double gRemeshDiagPercent = 0;  // > 0: Q-Morph re-meshes to this % of the bounding-box diagonal
-bool Remeshing() { return gRemeshFactor > 0 || gRemeshDiagPercent > 0; }
+bool Remeshing() { return gQMorphParams.remeshFirst || gRemeshFactor > 0 || gRemeshDiagPercent > 0; }
 
 double MeanEdgeLength(const TMesh &m)
 {
@@ -965,6 +973,7 @@ int main(int argc, char **argv)
         else if (a == "--remesh") gRemeshFactor = std::atof(next().c_str());
         else if (a == "--remesh-diag") gRemeshDiagPercent = std::atof(next().c_str());
         else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
+        else if (a == "--no-remesh") gQMorphParams.remeshFirst = false;
         else if (a == "--no-cleanup") gQMorphParams.cleanup = false;
         else if (a == "--no-smoothing") gQMorphParams.smoothing = false;
         else if (a == "--scaling") o.scaling = next();

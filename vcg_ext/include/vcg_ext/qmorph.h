@@ -17,7 +17,6 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <mutex>
 #include <numeric>
 #include <string>
 #include <unordered_set>
@@ -251,7 +250,6 @@ private:
         std::stable_sort(biggestFirst.begin(), biggestFirst.end(), [&](size_t a, size_t b) {
             return patches[a].second - patches[a].first > patches[b].second - patches[b].first;
         });
-        std::mutex inputMutex;  // the input surface's closest-point queries mark its faces
         struct Meshed {
             qmorph::QuadOutput::PatchPolygons polygons;
             qmorph::PatchStats ops;
@@ -268,13 +266,12 @@ private:
                 r.hasFront = in.hasFront;
                 qmorph::MixedMesh mm;
                 mm.Build(in.points, in.tris, in.cut);
-                if (res.targetEdgeLength > 0) {  // the patch is the re-meshed surface: the input judges
-                    const double side = in.reversed ? -1 : 1;  // the patch is read the other way round
-                    mm.judge = [&input, &inputMutex, side](const P3 &p, const P3 &own) {
-                        std::lock_guard<std::mutex> lock(inputMutex);
-                        return input.NormalUnder(p, own * side) * side;
-                    };
-                }
+                // The input judges: under a re-meshed patch the patch's own surface is not the input,
+                // and on the input itself a walk over the patch can end on the far side of a tight bend.
+                const double side = in.reversed ? -1 : 1;  // the patch is read the other way round
+                mm.judge = [&input, side](const P3 &p, double near) {  // read-only queries: no lock
+                    return input.NormalUnder(p, P3(0, 0, 0), near) * side;
+                };
                 mm.SetKeys(in.globalOf);
                 SurfaceProjector surface;
                 surface.Build(in.points, in.tris);

@@ -61,9 +61,11 @@ public:
     std::vector<int> faceLevel;         // quads: the row they were made in
     const SurfaceProjector *input = nullptr;  // see SetInputSurface
     const std::vector<int> *home = nullptr;
-    // Optional: the normal under a point of the surface the mesh must finally agree with, given
-    // the patch's own (the input before re-meshing); used by the final judgements (exact).
-    std::function<P3(const P3 &, const P3 &)> judge;
+    // Optional: the normal of the surface the mesh must agree with (the whole input) under a
+    // point, or (0, 0, 0) where it cannot tell (then the patch's own surface decides); used by
+    // every orientation judgement (see InputSurfaceNormalAt). The second argument: how far the
+    // patch's surface is from the point, where the search starts (< 0: unknown).
+    std::function<P3(const P3 &, double)> judge;
 
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }
@@ -262,6 +264,17 @@ public:
         const int t = HomeOf(near);
         return input ? input->NormalAt(point, &t, 1) : P3(0, 0, 0);
     }
+    // Unit normal of the input surface at `point`, the nearest of the walks from `homes`; `exact`:
+    // the judge's when there is one (a walk over the patch can end on the far side of a tight
+    // bend, and a re-meshed patch is not the input).
+    P3 InputSurfaceNormalAt(const P3 &point, const int *homes, int count, bool exact = false) const
+    {
+        double distance = -1;
+        const P3 n = input ? input->NormalAt(point, homes, count, &distance) : P3(0, 0, 0);
+        if (!exact || !judge) return n;
+        const P3 judged = judge(point, distance);
+        return judged.SquaredNorm() > 0 ? judged : n;
+    }
     // Unit normal of the input surface under face f, at its centroid (as an independent judge
     // measures it: a face is flipped when it points away from it); `exact` walks from every corner.
     P3 InputFaceNormal(int f, bool exact = false) const
@@ -274,8 +287,7 @@ public:
             homes[k] = HomeOf(Org(h));
         }
         c /= double(faceSize[f]);
-        P3 n = input ? input->NormalAt(c, homes, exact ? faceSize[f] : 1) : P3(0, 0, 0);
-        if (exact && judge) n = judge(c, n);
+        const P3 n = InputSurfaceNormalAt(c, homes, exact ? faceSize[f] : 1, exact);
         return n.SquaredNorm() > 0 ? n : UnitFaceNormal(f);
     }
 

@@ -117,12 +117,18 @@ protected:
     // Node moves: no face around may fall to this quality (folded), nor below min(worst before, fair).
     static constexpr double kMinMoveQuality = 1e-3, kFairMoveQuality = 0.2;
 
-    // The input surface's normal under a polygon of nodes, present or planned: at its centroid.
+    // The input surface's normal under a polygon of nodes, present or planned: at its centroid,
+    // the nearest of the walks from every corner's home (one can stop on the wrong side of a tight
+    // bend), as the judge has it when there is one (the true input under a re-meshed patch).
     P3 InputNormalOf(std::initializer_list<int> corners) const
     {
         P3 c(0, 0, 0);
-        for (int v : corners) c += m.pos[v];
-        const P3 n = m.InputNormalAt(c / double(corners.size()), *corners.begin());
+        int homes[4], count = 0;
+        for (int v : corners) {
+            c += m.pos[v];
+            if (count < 4) homes[count++] = m.HomeOf(v);
+        }
+        const P3 n = m.InputSurfaceNormalAt(c / double(corners.size()), homes, count, true);
         return n.SquaredNorm() > 0 ? n : m.InputNormal(*corners.begin());
     }
 
@@ -164,7 +170,10 @@ protected:
         P3 u = m.pos[b] - m.pos[a], v = m.pos[c] - m.pos[a], w = m.pos[c] - m.pos[b];
         double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
         double nl = n.Norm();
-        return m.DistinctNodes({a, b, c}) && nl > 0 && (u ^ v) * n > kMinSine * l2 * nl && ((m.pos[b] - m.pos[a]) ^ (m.pos[c] - m.pos[a])) * n > 0;
+        if (!(m.DistinctNodes({a, b, c}) && nl > 0 && (u ^ v) * n > kMinSine * l2 * nl)) return false;
+        for (int x : {a, b, c})  // nor upside down at a corner (a triangle across a tight bend)
+            if ((u ^ v) * m.InputNormal(x) <= 0) return false;
+        return true;
     }
 
     // Shape of any face against reference normal n: a quad's QuadShape, a triangle's quality.
@@ -181,11 +190,11 @@ protected:
     std::pair<double, double> WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces)
     {
         double before = 1e9, after = 1e9;
-        for (int f : faces) before = std::min(before, FaceQualityAt(f, m.InputFaceNormal(f)));
+        for (int f : faces) before = std::min(before, FaceQualityAt(f, m.InputFaceNormal(f, true)));
         std::vector<P3> old;
         for (int v : moved) old.push_back(m.pos[v]);
         for (int v : moved) m.pos[v] = at;
-        for (int f : faces) after = std::min(after, FaceQualityAt(f, m.InputFaceNormal(f)));  // the surface under the new place
+        for (int f : faces) after = std::min(after, FaceQualityAt(f, m.InputFaceNormal(f, true)));  // the surface under the new place
         size_t k = 0;
         for (int v : moved) m.pos[v] = old[k++];
         return {before, after};

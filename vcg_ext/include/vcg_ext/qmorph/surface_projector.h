@@ -42,7 +42,7 @@ public:
     P3 Normal(int t) const { return t >= 0 && t < int(normal.size()) ? normal[t] : P3(0, 0, 0); }
     // Unit normal of the surface at `point`: of the triangle nearest it found by walking from each
     // of `homes` (one walk can stop short on a strongly curved surface); (0, 0, 0) when none is valid.
-    P3 NormalAt(const P3 &point, const int *homes, int count) const
+    P3 NormalAt(const P3 &point, const int *homes, int count, double *distance = nullptr) const
     {
         double best = -1;
         int bestT = -1;
@@ -51,10 +51,19 @@ public:
             if (t < 0 || t >= TriangleCount()) continue;
             const double d = (Project(point, t) - point).SquaredNorm();
             if (bestT < 0 || d < best) { best = d; bestT = t; }
+            if (i == 0 && FacesAllHomes(t, homes, count)) break;  // no bend in between: one walk is enough
         }
+        if (distance) *distance = bestT < 0 ? -1 : std::sqrt(best);
         return Normal(bestT);
     }
     int TriangleCount() const { return int(tri.size()); }
+    // Triangle t faces the same way (within 90 degrees) as every one of `homes`.
+    bool FacesAllHomes(int t, const int *homes, int count) const
+    {
+        for (int i = 0; i < count; ++i)
+            if (Normal(t) * Normal(homes[i]) <= 0) return false;
+        return true;
+    }
 
     // Closest point to p found by walking from `home` (updated to the triangle of the result).
     P3 Project(const P3 &p, int &home) const

@@ -247,7 +247,7 @@ private:
         // every quad around (v replaced by its half's position) and the new quad must be fair
         auto fair = [&](int k, const P3 &at) {
             const int g = out[k];
-            const P3 n0 = m.InputFaceNormal(m.heFace[g]);
+            const P3 n0 = m.InputFaceNormal(m.heFace[g], true);
             const std::array<P3, 4> q{at, m.pos[m.Dst(g)], m.pos[m.Dst(m.heNext[g])], m.pos[m.Org(m.hePrev[g])]};
             const double before = QuadShape({m.pos[v], q[1], q[2], q[3]}, n0);
             const double after = QuadShape(q, n0);

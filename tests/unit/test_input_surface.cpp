@@ -1,0 +1,60 @@
+// The input surface as the judge of flipped faces (common/input_surface.h): next to a crease sharper
+// than 90 degrees (a thin fin), the closest triangle decides when the point lies on it, and only a
+// point about as close to both sides is left to the caller's own normal.
+#include <gtest/gtest.h>
+
+#include "test_mesh.h"
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg_ext/common/input_surface.h>
+
+using namespace qmf_test;
+
+namespace {
+
+typedef vcg::Point3d D3;
+
+// A knife: a lower sheet (z = 0, facing down) and an upper sheet rising to kOpening at x = 0
+// (facing up) that meet at the edge x = 1, their normals almost opposite (about 178 degrees).
+const float kOpening = 0.04f;
+
+void MakeKnife(TMesh &m)
+{
+    Build(m,
+          {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, kOpening}, {0, 1, kOpening}},
+          {{0, 2, 1}, {0, 3, 2}, {4, 1, 2}, {4, 2, 5}});
+}
+
+}  // namespace
+
+TEST(InputSurface, ThinFinSideUnderAFaceLyingOnItDecides)
+{
+    TMesh m;
+    MakeKnife(m);
+    vcg_ext::InputSurface<TMesh> input(m);
+    const D3 down(0, 0, -1), up(0, 0, 1);
+    // On the lower sheet, its normal whatever the caller's: a face there facing up is flipped.
+    EXPECT_LT(input.NormalUnder(D3(0.5, 0.5, 0), up)[2], -0.99);
+    EXPECT_LT(input.NormalUnder(D3(0.3, 0.7, 0), down)[2], -0.99);
+    // On the upper sheet (z = 0.02 at x = 0.5), its normal.
+    EXPECT_GT(input.NormalUnder(D3(0.5, 0.5, kOpening / 2), down)[2], 0.99);
+}
+
+TEST(InputSurface, ThinFinPointBetweenTheSidesKeepsTheCallersNormal)
+{
+    TMesh m;
+    MakeKnife(m);
+    vcg_ext::InputSurface<TMesh> input(m);
+    const D3 own(0.6, 0, 0.8);
+    // Halfway between the sheets at x = 0.5 (z = 0.01): neither side decides.
+    const D3 n = input.NormalUnder(D3(0.5, 0.5, kOpening / 4), own);
+    EXPECT_DOUBLE_EQ(n[0], own[0]);
+    EXPECT_DOUBLE_EQ(n[2], own[2]);
+}
+
+TEST(InputSurface, FlatSurfaceAlwaysDecides)
+{
+    TMesh m;
+    MakeGrid(m, 4);  // z = 0, facing up: no sharp crease
+    vcg_ext::InputSurface<TMesh> input(m);
+    EXPECT_GT(input.NormalUnder(D3(0.4, 0.4, 0.3), D3(0, 0, -1))[2], 0.99);
+}
