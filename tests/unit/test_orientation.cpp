@@ -1,12 +1,12 @@
 // Orientation independence: a consistently flipped copy of a mesh (whichever corner each flipped
 // face starts at) gives the same result mirrored. Q-Morph on the same front: the same vertices
 // bit for bit, the same faces reversed, the same counts and quality; VSA: the same region ids;
-// the whole pipeline on the CAD meshes joint and anchor: the same quad mesh mirrored. (The boundary
-// smoothing still rounds differently on a flipped scan: fandisk and elephant fronts differ in the
-// last bits, so their whole-pipeline results differ a little.)
+// the whole pipeline (Q-Morph re-meshing first or not) on CAD parts and a scan: the same quad mesh
+// mirrored, every figure of the report bit for bit.
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <string>
 #include <set>
 
 #include "quad_checks.h"
@@ -59,10 +59,17 @@ std::multiset<std::array<int, 3>> FaceSet(const TMesh &m, bool reversed)
     return s;
 }
 
-// Q-Morph (after `before`, e.g. filters 1-3) on the input and on its flipped copies: the same mesh mirrored.
-void ExpectSameQMorphMirrored(const TMesh &input, const std::function<void(TMesh &)> &before = [](TMesh &) {})
+// The run's log line without its time (the last field).
+std::string SummaryWithoutTime(const QM::Result &r)
 {
-    const QM::Params p;
+    const std::string s = r.Summary();
+    return s.substr(0, s.rfind(';'));
+}
+
+// Q-Morph (after `before`, e.g. filters 1-3) on the input and on its flipped copies: the same mesh mirrored.
+void ExpectSameQMorphMirrored(const TMesh &input, const std::function<void(TMesh &)> &before = [](TMesh &) {},
+                              const QM::Params &p = QM::Params())
+{
     TMesh a;
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(a, const_cast<TMesh &>(input));
     before(a);
@@ -78,12 +85,18 @@ void ExpectSameQMorphMirrored(const TMesh &input, const std::function<void(TMesh
         ASSERT_EQ(rb.error, "");
         EXPECT_EQ(rb.quads, ra.quads);
         EXPECT_EQ(rb.triangles, ra.triangles);
-        // (the report judges against vcg's float face normals of the input, whose last bits depend on the
-        // corner a face starts at; the mesh itself is compared bit for bit below)
-        EXPECT_NEAR(rb.quality.meanJacobian, ra.quality.meanJacobian, 1e-6);
-        EXPECT_NEAR(rb.quality.minJacobian, ra.quality.minJacobian, 1e-6);
+        // the log lines, figures printed to 3 decimals; the figures themselves bit for bit
+        EXPECT_EQ(SummaryWithoutTime(rb), SummaryWithoutTime(ra));
+        EXPECT_EQ(rb.RemeshSummary(), ra.RemeshSummary());
+        EXPECT_EQ(rb.QualitySummary(), ra.QualitySummary());
+        EXPECT_EQ(rb.quality.meanJacobian, ra.quality.meanJacobian);
+        EXPECT_EQ(rb.quality.minJacobian, ra.quality.minJacobian);
+        EXPECT_EQ(rb.quality.p5Jacobian, ra.quality.p5Jacobian);
+        EXPECT_EQ(rb.quality.quadAreaFraction, ra.quality.quadAreaFraction);
+        EXPECT_EQ(rb.quality.quadsBelow03, ra.quality.quadsBelow03);
         EXPECT_EQ(rb.quality.irregularVertices, ra.quality.irregularVertices);
         EXPECT_EQ(rb.quality.flippedFaces, ra.quality.flippedFaces);
+        EXPECT_EQ(rb.quality.foldedQuads, ra.quality.foldedQuads);
         ASSERT_EQ(b.vert.size(), a.vert.size());
         int moved = 0;
         for (size_t i = 0; i < a.vert.size(); ++i) moved += !(a.vert[i].cP() == b.vert[i].cP());
@@ -118,6 +131,24 @@ TEST(Orientation, QMorphOnAFlippedFandiskIsTheSameMeshMirrored)
     ExpectSameQMorphMirrored(m);
 }
 
+// The four filters as the plugin runs them (Q-Morph re-meshing first at the automatic length) and
+// as the paper does (the input's triangles), on a CAD part with sharp creases and on a smooth scan.
+void ExpectWholePipelineMirrored(const char *name)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/" + name + ".off"));
+    for (bool remesh : {true, false}) {
+        SCOPED_TRACE(remesh ? "re-meshed first" : "the input's triangles");
+        QM::Params p;
+        p.remeshFirst = remesh;
+        ExpectSameQMorphMirrored(m, SplitAlongRegionFronts, p);
+    }
+}
+
+TEST(Orientation, WholePipelineOnAFlippedFandiskIsTheSameMeshMirrored) { ExpectWholePipelineMirrored("fandisk"); }
+
+TEST(Orientation, WholePipelineOnAFlippedElephantIsTheSameMeshMirrored) { ExpectWholePipelineMirrored("elephant"); }
+
 // The four filters on coarse CAD tessellations with slivers.
 TEST(Orientation, WholePipelineOnAFlippedJointAndAnchorIsTheSameMeshMirrored)
 {
@@ -129,13 +160,16 @@ TEST(Orientation, WholePipelineOnAFlippedJointAndAnchorIsTheSameMeshMirrored)
     }
 }
 
-// (Not with re-meshing first: vcglib's IsotropicRemeshing depends on the orientation.)
 TEST(Orientation, QMorphOnAFlippedCubeWithCreasesSelectedIsTheSameMeshMirrored)
 {
     TMesh m;
     MakeCube(m, 5, 0.3f, 7);
     ASSERT_GT(SelectCreases(m, 45), 0);
     ExpectSameQMorphMirrored(m);
+    QM::Params remeshed;  // at a tenth of the side (the automatic length, 1% of the diagonal, is slow here)
+    const double kTenthOfTheSide = 0.1;
+    remeshed.targetEdgeLength = kTenthOfTheSide;
+    ExpectSameQMorphMirrored(m, [](TMesh &) {}, remeshed);
 }
 
 TEST(Orientation, VsaGivesTheSameRegionsOnAFlippedCopy)

@@ -69,8 +69,10 @@ public:
         std::vector<P3> p;
         for (size_t i = 0; i < pm.faces.size(); ++i) {
             const std::vector<int> &f = pm.faces[i];
+            // from its lowest vertex on: the same roundings whichever way the polygon runs
+            const size_t low = size_t(std::min_element(f.begin(), f.end()) - f.begin());
             p.resize(f.size());
-            for (size_t k = 0; k < f.size(); ++k) p[k] = pm.points[f[k]];
+            for (size_t k = 0; k < f.size(); ++k) p[k] = pm.points[f[(low + k) % f.size()]];
             const P3 vectorArea = VectorArea(p.data(), int(p.size()));
             const double a = vectorArea.Norm();
             total += a;

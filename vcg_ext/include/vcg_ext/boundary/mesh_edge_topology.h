@@ -13,11 +13,13 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
 
 namespace vcg_ext {
 
-// Half-edge h = 3 * face + k runs from the face's vertex k to vertex (k + 1) % 3.
+// Half-edge h = 3 * face + k runs from vertex k to vertex (k + 1) % 3 of the face read canonically
+// (common/canonical_faces.h: lowest vertex first, components of negative orientation reversed).
 template <class MeshType>
 class MeshEdgeTopology
 {
@@ -47,7 +49,7 @@ public:
     const MeshType *mesh = nullptr;
     int vertexCount = 0;                       // size of m.vert (deleted vertices included)
     int faceCount = 0;                         // size of m.face (deleted faces included)
-    std::vector<std::array<int, 3>> faceVerts; // vertex indices per face, {-1,-1,-1} when deleted or ignored
+    std::vector<std::array<int, 3>> faceVerts; // vertex indices per face read canonically, {-1,-1,-1} when deleted or ignored
     int ignoredFaces = 0;                      // live faces with a repeated vertex: left out (no edges, no area)
     std::vector<int> vertFaceStart, vertFaces; // live faces around each vertex (CSR)
     std::vector<int> edgeOf;                   // edge id per half-edge, -1 for deleted faces
@@ -65,11 +67,11 @@ public:
         faceVerts.assign(faceCount, {-1, -1, -1});
         std::vector<int> count(vertexCount + 1, 0);
         ignoredFaces = 0;
+        CanonicalFaces canon;  // so that a flipped copy of the mesh rounds every step the same way
+        canon.Read(m);
         for (int f = 0; f < faceCount; ++f) {
-            const FaceType &face = m.face[f];
-            if (face.IsD()) continue;
-            std::array<int, 3> v;
-            for (int k = 0; k < 3; ++k) v[k] = int(vcg::tri::Index(m, face.cV(k)));
+            if (m.face[f].IsD()) continue;
+            const std::array<int, 3> &v = canon.tri[f];
             if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) { ++ignoredFaces; continue; }  // no edges, no area
             faceVerts[f] = v;
             for (int k = 0; k < 3; ++k) ++count[v[k]];

@@ -5,9 +5,15 @@
 // triangle can lie on the other side of the crease (evalquad documents the same false positives):
 // where a triangle facing the other way is about as close, the caller's own normal under the face
 // (the surface it was made on) decides.
+//
+// The copy is read canonically (common/canonical_faces.h: every triangle from its lowest vertex on,
+// components of negative orientation reversed), so closest points and normals round the same way on
+// a consistently flipped copy of the input; normals are handed out in the input's orientation, or
+// in the canonical one while the re-meshing (which works on the mesh read canonically) asks.
 #ifndef VCG_EXT_COMMON_INPUT_SURFACE_H
 #define VCG_EXT_COMMON_INPUT_SURFACE_H
 
+#include <algorithm>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -16,7 +22,9 @@
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/space/index/grid_static_ptr.h>
 
+#include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
+#include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
@@ -31,12 +39,16 @@ public:
     typedef vcg::GridStaticPtr<FaceType, ScalarType> Grid;
     typedef vcg::Point3d P3;
 
-    MeshType mesh;  // no adjacency; per-face normals and marks
+    MeshType mesh;  // read canonically (normals too, as vcg's closest-point code needs); no adjacency
     Grid grid;
 
     explicit InputSurface(MeshType &m)
     {
         vcg::tri::Append<MeshType, MeshType>::MeshCopy(mesh, m);
+        CanonicalFaces canon;
+        canon.Read(mesh);
+        for (size_t f = 0; f < mesh.face.size(); ++f) FaceCorners<MeshType>::Reorder(mesh, mesh.face[f], canon.corner[f]);
+        reversed = canon.reversed;
         vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(mesh);
         vcg::tri::UpdateBounding<MeshType>::Box(mesh);
         grid.Set(mesh.face.begin(), mesh.face.end(), int(kCellsPerFace * mesh.face.size()));
@@ -47,6 +59,15 @@ public:
         besideSharpCrease.assign(mesh.face.size(), 0);
         for (size_t h = 0; h < twin.size(); ++h)
             if (twin[h] >= 0 && mesh.face[h / 3].cN() * mesh.face[twin[h] / 3].cN() < 0) besideSharpCrease[h / 3] = 1;
+    }
+
+    // Normals in the canonical orientation (on) or the input's (off, the default).
+    void UseCanonicalOrientation(bool on) { canonical = on; }
+
+    // The unit normal of an input triangle (one of `mesh`), in the orientation asked for.
+    CoordType Normal(const FaceType *f) const
+    {
+        return reversed[vcg::tri::Index(mesh, f)] && !canonical ? -f->cN() : f->cN();
     }
 
     // The input triangle closest to p (its closest point in `closest`), or null. Queries only read
@@ -73,7 +94,7 @@ public:
     P3 NormalUnder(const P3 &p, const P3 &own, double within = -1)
     {
         const FaceType *near = UnambiguousClosest(p, within);
-        return near ? P3::Construct(near->cN()) : own;
+        return near ? P3::Construct(Normal(near)) : own;
     }
 
     // Per face of pm: the unit normal of the input triangle closest to its corner centroid, or
@@ -86,13 +107,15 @@ public:
         std::vector<P3> corners;
         for (const std::vector<int> &f : pm.faces) {
             corners.clear();
+            for (int v : f) corners.push_back(pm.points[v]);
+            // summed in the same order whichever way the polygon runs: from its lowest vertex toward
+            // the lower of that one's two neighbours
+            const int n = int(f.size()), low = int(std::min_element(f.begin(), f.end()) - f.begin());
+            const int step = f[(low + 1) % n] < f[(low + n - 1) % n] ? 1 : n - 1;
             P3 c(0, 0, 0);
-            for (int v : f) {
-                c += pm.points[v];
-                corners.push_back(pm.points[v]);
-            }
+            for (int i = 0, k = low; i < n; ++i, k = (k + step) % n) c += pm.points[f[k]];
             const FaceType *near = UnambiguousClosest(c / double(f.size()));
-            normals.push_back(near ? P3::Construct(near->cN())
+            normals.push_back(near ? P3::Construct(Normal(near))
                                    : own.size() == pm.faces.size() ? own[normals.size()]
                                                                    : VectorArea(corners.data(), int(corners.size())).Normalize());
         }
@@ -101,6 +124,8 @@ public:
 
 private:
     std::vector<char> besideSharpCrease;  // per input triangle
+    std::vector<char> reversed;           // per input triangle: read the other way round than the input's
+    bool canonical = false;               // see UseCanonicalOrientation
 
     // Next to a crease sharper than 90 degrees, the closest triangle decides only when every
     // triangle facing the other way is farther than kOtherSideFactor times its distance (plus

@@ -1,8 +1,11 @@
 // Index-based half-edge adjacency for splitting a mesh along polylines.
 //
-// Half-edge 3f+k is edge k of face f, running V(k) -> V((k+1)%3). twin[h] is the half-edge running
-// the other way along the same edge (-1 on a mesh boundary). Built by the shared edge pairing
-// (EdgePairing), without vcg's optional FF/VF components, so validating input never touches the mesh.
+// Half-edge 3f+k is edge k of face f read canonically (common/canonical_faces.h: lowest vertex first,
+// components of negative orientation reversed, so a flipped copy of the mesh is split with the same
+// roundings), running fv[f][k] -> fv[f][(k+1)%3]; InputEdge gives the face's own edge index. twin[h]
+// is the half-edge running the other way along the same edge (-1 on a mesh boundary). Built by the
+// shared edge pairing (EdgePairing), without vcg's optional FF/VF components, so validating input
+// never touches the mesh.
 // The build refuses meshes it cannot walk on: edges with more than two faces, inconsistently
 // oriented neighbours, repeated vertices in a face, vertices whose faces form several fans.
 #ifndef VCG_EXT_EMBEDDING_ADJACENCY_H
@@ -14,6 +17,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
 
 namespace vcg_ext {
@@ -25,6 +29,11 @@ public:
     std::vector<std::array<int, 3>> fv;  // vertex indices per face slot ({-1,-1,-1} for deleted faces)
     std::vector<int> twin;               // per half-edge, -1 on a boundary
     std::vector<int> vertexFace;         // per vertex: one incident live face, -1 if unreferenced
+    std::vector<std::array<char, 3>> corner;  // per face slot: the face's own corner holding fv[f][k]
+    std::vector<char> reversed;               // per face slot: fv runs the other way round than the face
+
+    // The face's own edge index of half-edge 3f+k (what its flags and vcg adjacency are indexed by).
+    int InputEdge(int f, int k) const { return reversed[f] ? corner[f][Next(k)] : corner[f][k]; }
 
     static int Next(int k) { return k == 2 ? 0 : k + 1; }
     static int Prev(int k) { return k == 0 ? 2 : k - 1; }
@@ -43,10 +52,13 @@ public:
     std::string Build(const MeshType &m)
     {
         const int nf = int(m.face.size()), nv = int(m.vert.size());
-        fv.assign(nf, {-1, -1, -1});
+        CanonicalFaces canon;
+        canon.Read(m);
+        fv = canon.tri;
+        corner = canon.corner;
+        reversed = canon.reversed;
         for (int f = 0; f < nf; ++f) {
             if (m.face[f].IsD()) continue;
-            for (int k = 0; k < 3; ++k) fv[f][k] = int(vcg::tri::Index(m, m.face[f].cV(k)));
             if (fv[f][0] == fv[f][1] || fv[f][1] == fv[f][2] || fv[f][2] == fv[f][0])
                 return "face " + std::to_string(f) + " has a repeated vertex";
         }

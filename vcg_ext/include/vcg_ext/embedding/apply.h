@@ -60,6 +60,8 @@ private:
     Plan &plan;
     Result &r;
     vcg::CallBackPos *cb;
+    std::vector<std::array<int, 3>> changedTri;  // per changed face (AddFaces' order): its piece, read canonically
+    std::vector<char> changedReversed;           // ... written into the mesh reversed
 
     EmbedVec P(int v) const { return EmbedVec::Construct(m.vert[v].cP()); }
 
@@ -122,7 +124,11 @@ private:
                 const int slot = j == 0 ? f : next++;
                 FaceType &nf = m.face[slot];
                 if (slot != f) nf.ImportData(m.face[f]);
-                for (int k = 0; k < 3; ++k) nf.V(k) = &m.vert[plan.pieces[i][j][k]];
+                const std::array<int, 3> &piece = plan.pieces[i][j];  // read canonically, like its parent
+                const bool rev = plan.adj.reversed[f];
+                for (int k = 0; k < 3; ++k) nf.V(k) = &m.vert[piece[rev && k ? 3 - k : k]];  // the input's orientation
+                changedTri.push_back(piece);
+                changedReversed.push_back(rev);
                 changed.push_back(slot);
                 parent.push_back(int(i));
             }
@@ -143,12 +149,17 @@ private:
             oldTwin[i] = {adj.twin[3 * f], adj.twin[3 * f + 1], adj.twin[3 * f + 2]};
         }
         adj.fv.resize(m.face.size(), {-1, -1, -1});
+        adj.corner.resize(m.face.size(), {0, 1, 2});
+        adj.reversed.resize(m.face.size(), 0);
         adj.twin.resize(3 * m.face.size(), -1);
         adj.vertexFace.resize(m.vert.size(), -1);
         std::vector<std::pair<uint64_t, int>> halfEdges;  // (from, to) -> half-edge
         halfEdges.reserve(3 * changed.size());
-        for (int f : changed) {
-            for (int k = 0; k < 3; ++k) adj.fv[f][k] = int(vcg::tri::Index(m, m.face[f].V(k)));
+        for (size_t i = 0; i < changed.size(); ++i) {
+            const int f = changed[i];
+            adj.fv[f] = changedTri[i];  // canonical; the face itself was written reversed where changedReversed
+            adj.reversed[f] = changedReversed[i];
+            adj.corner[f] = {0, char(changedReversed[i] ? 2 : 1), char(changedReversed[i] ? 1 : 2)};
             for (int k = 0; k < 3; ++k) {
                 halfEdges.push_back({DirectedKey(adj.fv[f][k], adj.fv[f][EmbeddingAdjacency::Next(k)]), 3 * f + k});
                 adj.vertexFace[adj.fv[f][k]] = f;
@@ -179,9 +190,9 @@ private:
         for (const IdPair &e : plan.frontEdges) {
             const int h = plan.adj.FindEdge(e.first, e.second);
             if (h < 0) { ++r.missingFrontEdges; continue; }
-            m.face[h / 3].SetFaceEdgeS(h % 3);
+            m.face[h / 3].SetFaceEdgeS(plan.adj.InputEdge(h / 3, h % 3));
             const int t = plan.adj.twin[h];
-            if (t >= 0) m.face[t / 3].SetFaceEdgeS(t % 3);
+            if (t >= 0) m.face[t / 3].SetFaceEdgeS(plan.adj.InputEdge(t / 3, t % 3));
         }
     }
 
@@ -189,11 +200,12 @@ private:
     {
         FaceType &face = m.face[f];
         for (int k = 0; k < 3; ++k) {
-            if (plan.adj.twin[3 * f + k] < 0) face.SetB(k);
-            else face.ClearB(k);
+            if (plan.adj.twin[3 * f + k] < 0) face.SetB(plan.adj.InputEdge(f, k));
+            else face.ClearB(plan.adj.InputEdge(f, k));
         }
         if (vcg::tri::HasPerFaceNormal(m)) {
             EmbedVec n = (P(plan.adj.fv[f][1]) - P(plan.adj.fv[f][0])) ^ (P(plan.adj.fv[f][2]) - P(plan.adj.fv[f][0]));
+            if (plan.adj.reversed[f]) n = -n;
             if (n.Norm() > 0) face.N() = CoordType::Construct(n.Normalize());
         }
     }
@@ -205,9 +217,9 @@ private:
             for (int f = 0; f < int(m.face.size()); ++f) {
                 if (m.face[f].IsD()) continue;
                 for (int k = 0; k < 3; ++k) {
-                    const int h = plan.adj.twin[3 * f + k];
-                    m.face[f].FFp(k) = h >= 0 ? &m.face[h / 3] : &m.face[f];
-                    m.face[f].FFi(k) = h >= 0 ? h % 3 : k;
+                    const int h = plan.adj.twin[3 * f + k], e = plan.adj.InputEdge(f, k);
+                    m.face[f].FFp(e) = h >= 0 ? &m.face[h / 3] : &m.face[f];
+                    m.face[f].FFi(e) = h >= 0 ? plan.adj.InputEdge(h / 3, h % 3) : e;
                 }
             }
         if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);

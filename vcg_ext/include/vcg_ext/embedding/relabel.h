@@ -44,11 +44,13 @@ private:
     {
     }
 
-    static double Area(const FaceType &f)
+    // From the face read canonically: the same rounding on a flipped copy of the mesh.
+    double Area(int f) const
     {
-        const EmbedVec a = EmbedVec::Construct(f.cP(0)), b = EmbedVec::Construct(f.cP(1)), c = EmbedVec::Construct(f.cP(2));
+        const EmbedVec a = P(adj.fv[f][0]), b = P(adj.fv[f][1]), c = P(adj.fv[f][2]);
         return 0.5 * ((b - a) ^ (c - a)).Norm();
     }
+    EmbedVec P(int v) const { return EmbedVec::Construct(m.vert[v].cP()); }
 
     // Patches: faces connected without crossing a selected edge. Each takes the id covering most
     // of its area (the new faces carry their parent's id); ids already taken by a larger patch
@@ -66,7 +68,7 @@ private:
             if (m.face[f].IsD()) continue;
             for (int k = 0; k < 3; ++k) {
                 const int h = adj.twin[3 * f + k];
-                if (h < 0 || h / 3 < f || m.face[f].IsFaceEdgeS(k)) continue;
+                if (h < 0 || h / 3 < f || m.face[f].IsFaceEdgeS(adj.InputEdge(f, k))) continue;
                 patches.Unite(f, h / 3);
             }
         }
@@ -91,8 +93,8 @@ private:
                 if (patch[f] < 0 || !mixed[patch[f]]) continue;
                 auto &ia = idArea[patch[f]];
                 auto it = std::find_if(ia.begin(), ia.end(), [&](const std::pair<int, double> &x) { return x.first == oldId[f]; });
-                if (it == ia.end()) ia.push_back({oldId[f], Area(m.face[f])});
-                else it->second += Area(m.face[f]);
+                if (it == ia.end()) ia.push_back({oldId[f], Area(f)});
+                else it->second += Area(f);
             }
             for (int pid = 0; pid < k; ++pid) {
                 if (!mixed[pid]) continue;
@@ -111,7 +113,7 @@ private:
             if (claim[pid] < 0 || claims[claim[pid]] > 1) contested[pid] = 1, anyContested = true;
         if (anyContested)
             for (int f = 0; f < n; ++f)
-                if (patch[f] >= 0 && contested[patch[f]]) area[patch[f]] += Area(m.face[f]);
+                if (patch[f] >= 0 && contested[patch[f]]) area[patch[f]] += Area(f);
         std::vector<int> order;
         for (int pid = 0; pid < k; ++pid)
             if (contested[pid]) order.push_back(pid);
@@ -132,7 +134,7 @@ private:
         for (int f = 0; f < n; ++f)
             for (int e = 0; e < 3; ++e) {
                 const int h = adj.twin[3 * f + e];
-                if (patch[f] >= 0 && h > 3 * f + e && m.face[f].IsFaceEdgeS(e) && patch[h / 3] == patch[f]) ++r.danglingFrontEdges;
+                if (patch[f] >= 0 && h > 3 * f + e && m.face[f].IsFaceEdgeS(adj.InputEdge(f, e)) && patch[h / 3] == patch[f]) ++r.danglingFrontEdges;
             }
         if (vcg::tri::HasPerFaceQuality(m))
             for (int f = 0; f < n; ++f)

@@ -192,7 +192,7 @@ private:
     {
         CoordType closest;
         const FaceType *f = surface.Closest(CoordType::Construct(p), closest);
-        if (!f || P3::Construct(f->cN()) * normal <= 0) return p;
+        if (!f || P3::Construct(surface.Normal(f)) * normal <= 0) return p;
         return P3::Construct(closest);
     }
 };

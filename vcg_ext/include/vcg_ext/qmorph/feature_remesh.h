@@ -15,6 +15,12 @@
 // Afterwards the front is re-selected: an output edge is front when the original edge it lies on
 // (found by its midpoint in a segment grid) was selected; creases are sharp edges again and the
 // partition cuts them as before.
+//
+// Orientation independence: vcglib's passes walk faces and their corners in order and round
+// accordingly, so the mesh (and the input surface) are re-meshed read canonically
+// (common/canonical_faces.h: every face from its lowest vertex on, components of negative
+// orientation reversed) and the faces of reversed components are turned back at the end: a
+// consistently flipped copy of the input is re-meshed into the same mesh, mirrored.
 #ifndef VCG_EXT_QMORPH_FEATURE_REMESH_H
 #define VCG_EXT_QMORPH_FEATURE_REMESH_H
 
@@ -24,9 +30,12 @@
 
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/isotropic_remeshing.h>
+#include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/selection.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <vcg_ext/common/canonical_faces.h>
+#include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/segment_grid.h>
 #include <vcg_ext/qmorph/short_edge_collapse.h>
@@ -63,6 +72,8 @@ public:
         Stats st;
         vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
         st.facesBefore = m.fn;
+        const int reversedBit = ReadCanonically(m);
+        surface.UseCanonicalOrientation(true);
         SegmentGrid features(L);
         std::vector<char> isFront;
         MarkFeatures(m, creaseAngleDeg, features, isFront, st);
@@ -85,6 +96,8 @@ public:
         }
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
         SelectFront(m, features, isFront, st);
+        BackToInputOrientation(m, reversedBit);
+        surface.UseCanonicalOrientation(false);
         st.facesAfter = m.fn;
         return st;
     }
@@ -133,7 +146,7 @@ private:
             CoordType onSurface;
             const FaceType *under = surface.Closest(v.cP(), onSurface);
             if (!under) continue;
-            const CoordType n = under->cN();
+            const CoordType n = surface.Normal(under);
             CoordType move = centroid / area - v.cP();
             move -= n * (move * n);
             const FaceType *target = surface.Closest(CoordType(v.cP() + move), onSurface);
@@ -149,11 +162,44 @@ private:
             bool ok = true;
             for (size_t i = 0; i < star.size() && ok; ++i) {
                 const CoordType N = vcg::TriangleNormal(*star[i]);
-                ok = N * target->cN() > 0 && N * normalsBefore[i] > 0;
+                ok = N * surface.Normal(target) > 0 && N * normalsBefore[i] > 0;
                 worstAfter = std::min(worstAfter, double(vcg::Quality(star[i]->cP(0), star[i]->cP(1), star[i]->cP(2))));
             }
             if (!ok || worstAfter < std::min(worstBefore, kMinRelaxQuality)) v.P() = old;
         }
+    }
+
+    // Every face of m reordered as CanonicalFaces reads it; those read reversed carry the returned
+    // user bit (vcglib's splits copy it to the new faces).
+    static int ReadCanonically(MeshType &m)
+    {
+        CanonicalFaces canon;
+        canon.Read(m);
+        const int bit = FaceType::NewBitFlag();
+        for (size_t f = 0; f < m.face.size(); ++f) {
+            FaceType &face = m.face[f];
+            if (face.IsD()) continue;
+            FaceCorners<MeshType>::Reorder(m, face, canon.corner[f]);
+            if (canon.reversed[f]) face.SetUserBit(bit);
+            else face.ClearUserBit(bit);
+        }
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+        return bit;
+    }
+
+    // The faces carrying `bit` turned back (the input's orientation), the bit released.
+    static void BackToInputOrientation(MeshType &m, int bit)
+    {
+        for (FaceType &f : m.face)
+            if (!f.IsD() && f.IsUserBit(bit)) {
+                FaceCorners<MeshType>::Reverse(m, f);
+                f.ClearUserBit(bit);
+            }
+        FaceType::DeleteBitFlag(bit);
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+        vcg::tri::UpdateNormal<MeshType>::PerFace(m);
     }
 
     // One vcglib pass; returns how many edges it split.

@@ -6,10 +6,10 @@
 // vertex the front passes through has one sector per side, and each sector becomes its own node
 // of the patch mesh (so slits, annuli and patches touching themselves need no special case).
 //
-// Orientation independence: every face is read from its lowest vertex index on, and the faces of a
-// component with a negative orientation sign (OrientationSigns) are read reversed, so a mesh and
-// its consistently flipped copy (whatever vertex each flipped face starts at) give the same patches
-// and every later decision the same: the output is the same mesh, written back mirrored.
+// Orientation independence: the faces are read canonically (common/canonical_faces.h: from the
+// lowest vertex on, components of negative orientation reversed), so a mesh and its consistently
+// flipped copy give the same patches and every later decision the same: the output is the same
+// mesh, written back mirrored.
 #ifndef VCG_EXT_QMORPH_PARTITION_H
 #define VCG_EXT_QMORPH_PARTITION_H
 
@@ -24,6 +24,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_key.h>
 #include <vcg_ext/common/edge_pairing.h>
 #include <vcg_ext/common/union_find.h>
@@ -63,22 +64,16 @@ struct FrontPartition {
     template <class MeshType>
     void Build(const MeshType &m, double creaseAngleDeg)
     {
+        CanonicalFaces canon;
+        canon.Read(m);
         for (size_t i = 0; i < m.face.size(); ++i)
             if (!m.face[i].IsD()) {
                 faceIdx.push_back(int(i));
-                const auto &f = m.face[i];
-                const std::array<int, 3> t{{int(vcg::tri::Index(m, f.cV(0))), int(vcg::tri::Index(m, f.cV(1))), int(vcg::tri::Index(m, f.cV(2)))}};
-                const int r = int(std::min_element(t.begin(), t.end()) - t.begin());
-                tri.push_back({t[r], t[(r + 1) % 3], t[(r + 2) % 3]});
-                for (int k = 0; k < 3; ++k) inputEdge.push_back(char((r + k) % 3));
+                tri.push_back(canon.tri[i]);
+                reversed.push_back(canon.reversed[i]);
+                for (int k = 0; k < 3; ++k) inputEdge.push_back(char(canon.InputEdge(int(i), k)));
             }
         const int F = int(tri.size());
-        reversed = OrientationSigns(m);
-        for (int f = 0; f < F; ++f)
-            if (reversed[f]) {  // (a, b, c) -> (a, c, b): edge k runs along the input's edge 2 - k
-                std::swap(tri[f][1], tri[f][2]);
-                std::swap(inputEdge[3 * f], inputEdge[3 * f + 2]);
-            }
         cut.assign(3 * F, 0);
         std::vector<int> twin(3 * F, -1);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
@@ -177,48 +172,6 @@ struct FrontPartition {
 
 private:
     std::vector<int> localOfSector;  // scratch of Extract: local node per sector, -1 outside the patch
-
-    // Per live face: whether its edge-connected component is read reversed. The sign of a
-    // component is that of its volume seen from a point inside, else (zero: flat) of the largest
-    // coordinate of its vector area; both are sums over the faces read lowest vertex first, so a
-    // flipped copy gives exactly the opposite sums (and outward closed meshes are read as they are).
-    template <class MeshType>
-    std::vector<char> OrientationSigns(const MeshType &m) const
-    {
-        const int F = int(tri.size());
-        IndexUnionFind comp(F);
-        const EdgePairing::Groups edges = EdgePairing::Group(tri);
-        for (int e = 0; e < edges.Count(); ++e)
-            for (int k = 1; k < edges.Size(e); ++k) comp.Unite(edges.Begin(e)[0] / 3, edges.Begin(e)[k] / 3);
-        auto pos = [&](int v) { return P3::Construct(m.vert[v].cP()); };
-        std::vector<P3> centroid(F, P3(0, 0, 0)), area(F, P3(0, 0, 0));
-        std::vector<double> count(F, 0), volume(F, 0);
-        for (int f = 0; f < F; ++f) {  // the mean of the faces' lowest vertices (summed the same way both ways round)
-            const int c = comp.Find(f);
-            centroid[c] += pos(tri[f][0]);
-            count[c] += 1;
-        }
-        for (int f = 0; f < F; ++f) {
-            const int c = comp.Find(f);
-            const P3 o = centroid[c] / count[c];
-            const P3 a = pos(tri[f][0]) - o, b = pos(tri[f][1]) - o, d = pos(tri[f][2]) - o;
-            volume[c] += a * (b ^ d);
-            area[c] += (pos(tri[f][1]) - pos(tri[f][0])) ^ (pos(tri[f][2]) - pos(tri[f][0]));
-        }
-        std::vector<char> out(F, 0);
-        for (int f = 0; f < F; ++f) {
-            const int c = comp.Find(f);
-            double sign = volume[c];
-            if (sign == 0) {
-                const P3 &a = area[c];
-                sign = a[0];
-                if (std::fabs(a[1]) > std::fabs(sign)) sign = a[1];
-                if (std::fabs(a[2]) > std::fabs(sign)) sign = a[2];
-            }
-            out[f] = sign < 0;
-        }
-        return out;
-    }
 
     // Sharp edges inside a patch (VSA regions may hold creases up to twice the threshold angle)
     // are cut like front edges: quads then follow them instead of folding over them.
