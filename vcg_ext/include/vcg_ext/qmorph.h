@@ -269,8 +269,10 @@ private:
                 // The input judges: under a re-meshed patch the patch's own surface is not the input,
                 // and on the input itself a walk over the patch can end on the far side of a tight bend.
                 const double side = in.reversed ? -1 : 1;  // the patch is read the other way round
-                mm.judge = [&input, side](const P3 &p, double near) {  // read-only queries: no lock
-                    return input.NormalUnder(p, P3(0, 0, 0), near) * side;
+                // The patch's distance starts the search only where the patch is the input itself.
+                const bool patchIsInput = !(res.targetEdgeLength > 0);
+                mm.judge = [&input, side, patchIsInput](const P3 &p, double near) {  // read-only queries: no lock
+                    return input.NormalUnder(p, P3(0, 0, 0), patchIsInput ? near : -1) * side;
                 };
                 mm.SetKeys(in.globalOf);
                 SurfaceProjector surface;
