@@ -1,6 +1,6 @@
 // The input surface as the judge of flipped faces (common/input_surface.h): next to a crease sharper
-// than 90 degrees (a thin fin), the closest triangle decides when the point lies on it, and only a
-// point about as close to both sides is left to the caller's own normal.
+// than 90 degrees (a thin fin), the closest triangle decides, and only a point as close to both
+// sides (on the crease) is left to the caller's own normal.
 #include <gtest/gtest.h>
 
 #include "test_mesh.h"
@@ -39,14 +39,16 @@ TEST(InputSurface, ThinFinSideUnderAFaceLyingOnItDecides)
     EXPECT_GT(input.NormalUnder(D3(0.5, 0.5, kOpening / 2), down)[2], 0.99);
 }
 
-TEST(InputSurface, ThinFinPointBetweenTheSidesKeepsTheCallersNormal)
+TEST(InputSurface, ThinFinNearerSideDecidesAndItsEdgeKeepsTheCallersNormal)
 {
     TMesh m;
     MakeKnife(m);
     vcg_ext::InputSurface<TMesh> input(m);
     const D3 own(0.6, 0, 0.8);
-    // Halfway between the sheets at x = 0.5 (z = 0.01): neither side decides.
-    const D3 n = input.NormalUnder(D3(0.5, 0.5, kOpening / 4), own);
+    // Between the sheets at x = 0.5, a quarter of the opening up: nearer the lower sheet.
+    EXPECT_LT(input.NormalUnder(D3(0.5, 0.5, kOpening / 8), own)[2], -0.99);
+    // On the fin's edge (x = 1) both sheets are as close: neither decides.
+    const D3 n = input.NormalUnder(D3(1, 0.5, 0), own);
     EXPECT_DOUBLE_EQ(n[0], own[0]);
     EXPECT_DOUBLE_EQ(n[2], own[2]);
 }

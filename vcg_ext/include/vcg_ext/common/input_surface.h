@@ -3,8 +3,9 @@
 // flipped when its vector area points away from the normal of the input triangle closest to its
 // centroid, ALGORITHMS.md section 5). Next to a crease sharper than 90 degrees the closest
 // triangle can lie on the other side of the crease (evalquad documents the same false positives):
-// where a triangle facing the other way is about as close, the caller's own normal under the face
-// (the surface it was made on) decides.
+// the closest one still decides (a face whose centroid is nearer the other sheet counts as flipped,
+// as evalquad counts it); only where a triangle facing the other way is exactly as close (a point on
+// the crease) the caller's own normal under the face (the surface it was made on) decides.
 //
 // The copy is read canonically (common/canonical_faces.h: every triangle from its lowest vertex on,
 // components of negative orientation reversed), so closest points and normals round the same way on
@@ -81,7 +82,7 @@ public:
         vcg::tri::EmptyTMark<MeshType> noMarks;
         ScalarType dist = 0;
         if (within >= 0) {
-            const ScalarType radius = ScalarType(within * kNearSearchSlack + kOtherSideDiagonal * mesh.bbox.Diag());
+            const ScalarType radius = ScalarType(within * kNearSearchSlack + kTieDiagonal * mesh.bbox.Diag());
             dist = radius;
             if (const FaceType *f = grid.GetClosest(distance, noMarks, p, radius, dist, closest)) return f;
         }
@@ -90,7 +91,7 @@ public:
     }
 
     // Unit normal of the input triangle closest to p, or `own` when a triangle facing the other way
-    // across a crease sharper than 90 degrees is about as close (or there is none). `within`: a
+    // across a crease sharper than 90 degrees is as close (or there is none). `within`: a
     // distance to a surface near p known to the caller, where the search starts (< 0: unknown).
     P3 NormalUnder(const P3 &p, const P3 &own, double within = -1)
     {
@@ -128,26 +129,25 @@ private:
     std::vector<char> reversed;           // per input triangle: read the other way round than the input's
     bool canonical = false;               // see UseCanonicalOrientation
 
-    // Next to a crease sharper than 90 degrees, the closest triangle decides only when every
-    // triangle facing the other way is farther than kOtherSideFactor times its distance (plus
-    // kOtherSideDiagonal of the diagonal): a face lying on one side of a thin fin is judged by that
-    // side, a point between the two sides by nobody.
-    static constexpr double kOtherSideFactor = 2, kOtherSideDiagonal = 1e-7;
+    // Next to a crease sharper than 90 degrees, the closest triangle decides unless a triangle
+    // facing the other way is as close, up to kTieDiagonal of the diagonal (a point on the crease
+    // itself): a face is judged by the side its centroid is nearest, as evalquad judges it.
+    static constexpr double kTieDiagonal = 1e-7;
     // Grid cells per triangle: a surface fills few cells of its box, so vcglib's default (one per
     // triangle) leaves dozens of triangles in each cell a query near the surface must test.
     static constexpr double kCellsPerFace = 8;
     // A search near a known surface goes a little beyond it (float rounding of the copy).
     static constexpr double kNearSearchSlack = 1.01;
 
-    // The input triangle closest to p, or null when there is none or p is about as close to a
-    // triangle facing the other way across a crease sharper than 90 degrees.
+    // The input triangle closest to p, or null when there is none or p is as close to a triangle
+    // facing the other way across a crease sharper than 90 degrees.
     const FaceType *UnambiguousClosest(const P3 &p, double within = -1)
     {
         CoordType closest;
         const CoordType q = CoordType::Construct(p);
         const FaceType *near = Closest(q, closest, within);
         if (!near || !besideSharpCrease[vcg::tri::Index(mesh, near)]) return near;
-        const ScalarType radius = ScalarType(kOtherSideFactor * vcg::Distance(q, closest) + kOtherSideDiagonal * mesh.bbox.Diag());
+        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag());
         std::vector<FaceType *> around;
         std::vector<ScalarType> distances;
         std::vector<CoordType> points;
