@@ -254,7 +254,7 @@ void Usage()
         "  --no-fork           run everything in this process (a crash stops the benchmark)\n"
         "  --out FILE          also write the markdown report to FILE\n"
         "  --remesh F          Q-Morph re-meshes first to F x the mean edge length of its input\n"
-        "  --remesh-diag P     Q-Morph re-meshes first to P % of the bounding-box diagonal\n"
+        "  --remesh-diag P     Q-Morph re-meshes first to P %% of the bounding-box diagonal\n"
         "  --no-cleanup, --no-smoothing  Q-Morph without its topological clean-up / tangent-plane smoothing\n"
         "  --no-preserve       Q-Morph with 'Preserve initial front' off\n"
         "  --no-remesh         Q-Morph on the split mesh's own triangles ('Re-mesh first' off)\n"
@@ -320,7 +320,9 @@ QM::Params PluginDefaults()
 QM::Params gQMorphParams = PluginDefaults();
 double gRemeshFactor = 0;  // > 0: Q-Morph re-meshes to this times the mean edge length of its input
 double gRemeshDiagPercent = 0;  // > 0: Q-Morph re-meshes to this % of the bounding-box diagonal
-bool Remeshing() { return gQMorphParams.remeshFirst || gRemeshFactor > 0 || gRemeshDiagPercent > 0; }
+// Front curves after re-meshing: output front points within this fraction of the diagonal of the
+// input front, chords within this fraction of the edge length (the collapse pass's tolerance).
+constexpr double kFrontOnCurve = 1e-5, kFrontChord = 0.1 + 1e-6;
 
 double MeanEdgeLength(const TMesh &m)
 {
@@ -731,10 +733,12 @@ void RunJob(const Job &job, const Options &o)
     const std::vector<PosEdge> edgesAfter = EdgesByPosition(work, false), selAfter = EdgesByPosition(work, true);
     long lost = 0;
     for (const PosEdge &x : frontBefore) lost += !std::binary_search(edgesAfter.begin(), edgesAfter.end(), x);
-    // re-meshing cuts front edges into pieces: then each must be a chain of selected output edges
-    const long mismatches = Remeshing() ? FrontChainMismatches(frontBefore, selAfter) : 0;
-    if (Remeshing()) lost = mismatches;
-    const bool frontKept = Remeshing() ? mismatches == 0 : lost == 0 && selAfter == frontBefore;
+    // re-meshing cuts front edges into pieces, and may coarsen a front over smooth surface into
+    // chords within a tenth of its length (ShortEdgeCollapse): the fronts are compared as curves
+    const double L = r.qm.targetEdgeLength;
+    const long mismatches = L > 0 ? FrontCurveMismatches(frontBefore, selAfter, kFrontOnCurve * diag, kFrontChord * L) : 0;
+    if (L > 0) lost = mismatches;
+    const bool frontKept = L > 0 ? mismatches == 0 : lost == 0 && selAfter == frontBefore;
     Progress(label, "Hausdorff distance");
     auto th = Clock::now();
     const double hd = Hausdorff(work, input) / diag;
@@ -754,8 +758,8 @@ void RunJob(const Job &job, const Options &o)
     Emit(T_CHECKS, {label, Ms(r.Total()), Fmt("%.3f", 100 * hd),
                     Fmt("%+.3f", volumeIn != 0 ? 100 * (volumeOut - volumeIn) / std::fabs(volumeIn) : 0.0), closedText,
                     YesNo(genusKept) + Fmt(" (%ld -> %ld)", eulerIn, qm.euler),
-                    frontKept ? (Remeshing() ? "yes (as chains)" : "yes")
-                              : Remeshing() ? Fmt("NO (%ld front edges not chains)", lost)
+                    frontKept ? (L > 0 ? "yes (as curves)" : "yes")
+                              : L > 0 ? Fmt("NO (%ld front edges off the curves)", lost)
                                                   : Fmt("NO (%ld lost, selection %s)", lost, selAfter == frontBefore ? "same" : "changed"),
                     Fmt("%.0f", peakAll)});
     const double below = q.quads ? double(q.quadsBelow03) / q.quads : 0;
