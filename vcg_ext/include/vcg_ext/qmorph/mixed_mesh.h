@@ -257,16 +257,9 @@ public:
         const P3 n = input ? input->Normal(HomeOf(v)) : P3(0, 0, 0);
         return n.SquaredNorm() > 0 ? n : VertexNormal(v);
     }
-    // Unit normal of the input surface at `point`, walking from the home of node `near`; (0, 0, 0)
-    // without an input surface.
-    P3 InputNormalAt(const P3 &point, int near) const
-    {
-        const int t = HomeOf(near);
-        return input ? input->NormalAt(point, &t, 1) : P3(0, 0, 0);
-    }
-    // Unit normal of the input surface at `point`, the nearest of the walks from `homes`; `exact`:
-    // the judge's when there is one (a walk over the patch can end on the far side of a tight
-    // bend, and a re-meshed patch is not the input).
+    // Unit normal of the input surface at `point` ((0, 0, 0) without one), the nearest of the walks
+    // from `homes`; `exact`: the judge's when there is one (a walk over the patch can end on the far
+    // side of a tight bend, and a re-meshed patch is not the input).
     P3 InputSurfaceNormalAt(const P3 &point, const int *homes, int count, bool exact = false) const
     {
         double distance = -1;
@@ -398,7 +391,8 @@ public:
         auto positive = [&](int x, int y, int z) {
             P3 u = pos[y] - pos[x], v = pos[z] - pos[x], w = pos[z] - pos[y];
             double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
-            P3 under = InputNormalAt((pos[x] + pos[y] + pos[z]) / 3.0, x);  // the surface under the new triangle
+            const int from = HomeOf(x);
+            P3 under = InputSurfaceNormalAt((pos[x] + pos[y] + pos[z]) / 3.0, &from, 1);  // the surface under the new triangle
             if (!(under.SquaredNorm() > 0)) under = n;
             return (u ^ v) * n > kMinFlipSine * l2 && (u ^ v) * under > kMinFlipSine * l2;
         };
