@@ -110,9 +110,9 @@ public:
         {
             if (!(targetEdgeLength > 0)) return "";
             return Format("Q-Morph re-meshing to edge length %g%s: %d front edges became %d (%d feature edges before), %d -> %d "
-                          "triangles; %d splits, %d collapses, %d flips",
+                          "triangles; %d splits, %d collapses, %d flips, %d splits facing feature strips",
                           targetEdgeLength, automaticLength ? " (automatic)" : "", remesh.frontEdgesBefore, remesh.frontEdgesAfter, remesh.featureEdges,
-                          remesh.facesBefore, remesh.facesAfter, remesh.splits, remesh.collapses, remesh.flips);
+                          remesh.facesBefore, remesh.facesAfter, remesh.splits, remesh.collapses, remesh.flips, remesh.facingSplits);
         }
         std::string QualitySummary() const
         {

@@ -43,6 +43,13 @@ public:
     // The segment nearest p among those within about a cell of it, or -1; its distance in `dist`.
     int Nearest(const P3 &p, double &dist) const
     {
+        return Nearest(p, dist, [](int) { return true; });
+    }
+
+    // The same among the segments `accept(id)` takes.
+    template <class Accept>
+    int Nearest(const P3 &p, double &dist, const Accept &accept) const
+    {
         int best = -1;
         dist = 1e300;
         const long cx = Cell(p[0]), cy = Cell(p[1]), cz = Cell(p[2]);
@@ -52,6 +59,7 @@ public:
                     auto it = cells.find(Key(x, y, z));
                     if (it == cells.end()) continue;
                     for (int id : it->second) {
+                        if (!accept(id)) continue;
                         const double d = Distance(p, id);
                         if (d < dist) { dist = d; best = id; }
                     }
@@ -59,12 +67,15 @@ public:
         return best;
     }
 
-    double Distance(const P3 &p, int id) const
+    double Distance(const P3 &p, int id) const { return (p - Closest(p, id)).Norm(); }
+
+    // The point of segment id nearest p.
+    P3 Closest(const P3 &p, int id) const
     {
         const P3 ab = to[id] - from[id];
         const double l2 = ab.SquaredNorm();
         const double t = l2 > 0 ? std::max(0.0, std::min(1.0, ((p - from[id]) * ab) / l2)) : 0.0;
-        return (p - (from[id] + ab * t)).Norm();
+        return from[id] + ab * t;
     }
 
 private:

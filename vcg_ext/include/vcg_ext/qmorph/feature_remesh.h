@@ -38,6 +38,7 @@
 #include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/segment_grid.h>
+#include <vcg_ext/qmorph/facing_features.h>
 #include <vcg_ext/qmorph/short_edge_collapse.h>
 
 namespace vcg_ext {
@@ -56,7 +57,7 @@ public:
 
     struct Stats {
         int featureEdges = 0, frontEdgesBefore = 0, frontEdgesAfter = 0;
-        int splits = 0, collapses = 0, flips = 0;
+        int splits = 0, collapses = 0, flips = 0, facingSplits = 0;
         int facesBefore = 0, facesAfter = 0;
     };
 
@@ -94,6 +95,7 @@ public:
             Pass(m, surface.mesh, p, st, false, true);  // flip toward valence 6
             for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface);
         }
+        st.facingSplits = FacingFeatures<MeshType>::Do(m, L);
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
         SelectFront(m, features, isFront, st);
         BackToInputOrientation(m, reversedBit);

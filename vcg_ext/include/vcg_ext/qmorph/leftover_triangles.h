@@ -210,7 +210,7 @@ private:
         int t = m.heTwin[h];
         int a = m.Org(h), b = m.Dst(h), c = m.Org(m.hePrev[h]), d = m.Org(m.hePrev[t]);
         if (!m.QuadHasFreeDiagonal(b, c, a, d, {m.heFace[h], m.heFace[t]})) return -1;
-        return QuadShape(b, c, a, d);
+        return QuadShape(b, c, a, d, true);  // two triangles across a thin strip make a thin rectangle
     }
 
     // The quad left after removing a doublet node must not be inverted.

@@ -101,6 +101,11 @@ protected:
 
     // A quad whose shortest side is below this fraction of its longest is as bad as a fold.
     static constexpr double kNeedleRatio = 0.02;
+    // A ladder's cell has rungs at most this fraction of its sides, and sides alike: the shorter
+    // at least kLadderSides of the longer.
+    static constexpr double kLadderRungs = 0.25, kLadderSides = 0.5;
+    // ... and corners near right angles: scaled Jacobian at least this.
+    static constexpr double kLadderMinJacobian = 0.7;
     // Triangles are valid when the sine of their smallest angle stays above this: thinner ones
     // are degenerate once written in float.
     static constexpr double kMinSine = 1e-3;
@@ -133,8 +138,8 @@ protected:
     }
 
     // Shape of the quad (a b c d) on the input surface (see the other QuadShape); -1 also when it
-    // has repeated nodes.
-    double QuadShape(int a, int b, int c, int d) const
+    // has repeated nodes. `thinRectangles`: a needle that is a thin rectangle counts too.
+    double QuadShape(int a, int b, int c, int d, bool thinRectangles = false) const
     {
         if (!m.DistinctNodes({a, b, c, d})) return -1;
         const std::array<P3, 4> pos{m.pos[a], m.pos[b], m.pos[c], m.pos[d]};
@@ -142,26 +147,36 @@ protected:
         const P3 N = VectorArea(pos.data(), 4);
         for (int v : {a, b, c, d})
             if (N * m.InputNormal(v) <= 0) return -1;
-        return QuadShape(pos, InputNormalOf({a, b, c, d}));
+        return QuadShape(pos, InputNormalOf({a, b, c, d}), thinRectangles);
     }
     // Shape of the quad `pos` against the input surface's normal n under it: its scaled Jacobian,
     // -1 when a needle, upside down or turned over at a corner on the surface, or folded.
-    static double QuadShape(const std::array<P3, 4> &pos, const P3 &n)
+    // With `thinRectangles`, a needle that is a ladder's cell (two short rungs across a strip
+    // narrower than any fair quad, as its two triangles are, and two long sides alike) is judged
+    // by its angles alone.
+    static double QuadShape(const std::array<P3, 4> &pos, const P3 &n, bool thinRectangles = false)
     {
-        double shortest = 1e300, longest = 0;  // a needle is as bad as a fold
+        double side[4], shortest = 1e300, longest = 0;  // a needle is as bad as a fold
         for (int k = 0; k < 4; ++k) {
-            double l = (pos[(k + 1) % 4] - pos[k]).Norm();
-            shortest = std::min(shortest, l);
-            longest = std::max(longest, l);
+            side[k] = (pos[(k + 1) % 4] - pos[k]).Norm();
+            shortest = std::min(shortest, side[k]);
+            longest = std::max(longest, side[k]);
         }
-        if (!(shortest > kNeedleRatio * longest)) return -1;
+        bool thinRectangle = false;  // two needle rungs facing each other across a long pair of sides
+        for (int k = 0; k < 2 && thinRectangles && shortest > kMinSine * longest; ++k)
+            thinRectangle |= std::max(side[k], side[k + 2]) <= kLadderRungs * std::min(side[k + 1], side[(k + 3) % 4]) &&
+                             std::min(side[k + 1], side[(k + 3) % 4]) > kLadderSides * std::max(side[k + 1], side[(k + 3) % 4]);
+        if (!(shortest > kNeedleRatio * longest) && !thinRectangle) return -1;
         const P3 N = VectorArea(pos.data(), 4);
         const double l = N.Norm();
         if (!(l > 0) || N * n <= 0) return -1;
         // turned over on the surface at a corner, or folded across both diagonals: invalid
         const double nl = n.Norm();
         if (!(nl > 0) || ScaledJacobian(pos.data(), n / nl) <= 0 || IsFolded(pos.data())) return -1;
-        return ScaledJacobian(pos.data(), N / l);
+        const double sj = ScaledJacobian(pos.data(), N / l);
+        // a ladder's cells are rectangles: a thin quad with slanted rungs is a needle after all
+        if (!(shortest > kNeedleRatio * longest) && sj < kLadderMinJacobian) return -1;
+        return sj;
     }
     // The triangle (a b c) is well oriented on the input surface, and not a sliver.
     bool TriPositive(int a, int b, int c) const
