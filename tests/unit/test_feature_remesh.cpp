@@ -297,3 +297,34 @@ TEST(FeatureRemesh, NodeMoveThatWouldTurnAFaceOverIsRefused)
     EXPECT_NEAR(m.pos[0][1], 0, 1e-12);
     EXPECT_NEAR(m.pos[0][2], 0, 1e-12) << "projected onto the input surface";
 }
+
+// A front over smooth surface is coarsened into chords, each within 0.1 L of the input's curve,
+// also where chords replace chords: the middle ring of a finely sliced cylinder (radius 1, 64
+// slices) re-meshed at L = 1.3, coarser than the ring (a check of each removed vertex against the
+// new chord alone, as before, let 7 chords of chords stray beyond 0.1 L of the circle).
+TEST(FeatureRemesh, ChordsOfASmoothFrontStayNearTheInputCurve)
+{
+    TMesh m;
+    MakeCylinder(m, 64, 16, 1.f, 2.f, 3);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    int ring = 0;
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (f.V0(k)->P()[2] == 0.f && f.V1(k)->P()[2] == 0.f) { f.SetFaceEdgeS(k); ++ring; }
+    ASSERT_EQ(ring, 2 * 64) << "the middle ring, both sides of each edge";
+    TMesh input;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+    const std::vector<PosEdge> front = EdgesByPosition(input, true);
+    const double L = 1.3;
+
+    QM::Params p;
+    p.targetEdgeLength = L;
+    const QM::Result r = QM::Apply(m, p);
+    ASSERT_EQ(r.error, "");
+    const std::vector<PosEdge> frontAfter = EdgesByPosition(m, true);
+    std::printf("smooth front: %zu -> %zu edges\n", front.size(), frontAfter.size());
+    EXPECT_LT(frontAfter.size(), front.size() / 2) << "the front was not coarsened: the test would not test the chords";
+    EXPECT_EQ(FrontCurveMismatches(front, frontAfter, kOnCurve * input.bbox.Diag(), kChord * L), 0)
+        << "front edges farther than 0.1 L from the input's curve (or their vertices off it)";
+}

@@ -67,6 +67,31 @@ public:
         return best;
     }
 
+    // Every segment stored in the cells within one cell of segment a-b, each once.
+    template <class Visit>
+    void ForEachNear(const P3 &a, const P3 &b, const Visit &visit) const
+    {
+        std::vector<int> seen;
+        const int steps = std::max(1, int(std::ceil(2 * (b - a).Norm() / h)));
+        for (int s = 0; s <= steps; ++s) {
+            const P3 p = a + (b - a) * (double(s) / steps);
+            const long cx = Cell(p[0]), cy = Cell(p[1]), cz = Cell(p[2]);
+            for (long x = cx - 1; x <= cx + 1; ++x)
+                for (long y = cy - 1; y <= cy + 1; ++y)
+                    for (long z = cz - 1; z <= cz + 1; ++z) {
+                        auto it = cells.find(Key(x, y, z));
+                        if (it == cells.end()) continue;
+                        for (int id : it->second)
+                            if (std::find(seen.begin(), seen.end(), id) == seen.end()) {
+                                seen.push_back(id);
+                                visit(id);
+                            }
+                    }
+        }
+    }
+
+    P3 Midpoint(int id) const { return (from[id] + to[id]) * 0.5; }
+
     double Distance(const P3 &p, int id) const { return (p - Closest(p, id)).Norm(); }
 
     // The point of segment id nearest p.

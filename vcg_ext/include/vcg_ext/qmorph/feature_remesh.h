@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -79,6 +80,7 @@ public:
         std::vector<char> isFront;
         MarkFeatures(m, creaseAngleDeg, features, isFront, st);
         auto isFrontEdge = [&](const P3 &a, const P3 &b) { return OnFront(features, isFront, a, b); };
+        auto toFeatures = [&](const P3 &a, const P3 &b) { return CurveDeviation(features, a, b, L); };
 
         typename Remesher::Params p;
         p.SetTargetLen(ScalarType(L));
@@ -91,7 +93,7 @@ public:
             if (cb) cb(100 * it / iterations, "Q-Morph: re-meshing");
             // split toward no edge longer than 4/3 L (see kMaxSplitPasses)
             for (int pass = 0; pass < kMaxSplitPasses && Pass(m, surface.mesh, p, st, true, false) > 0; ++pass) {}
-            st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, isFrontEdge);
+            st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, isFrontEdge, toFeatures);
             Pass(m, surface.mesh, p, st, false, true);  // flip toward valence 6
             for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface);
         }
@@ -249,6 +251,28 @@ private:
                 st.frontEdgesBefore += selected;
             }
     }
+
+    // How far a new chain edge a-b strays from the original feature curves: its midpoint's distance
+    // to them, and the farthest midpoint of an original feature edge beside it (projecting inside
+    // it, nearer than kBeside L: a bump of the curve the chord cuts off; farther ones are other
+    // features).
+    static double CurveDeviation(const SegmentGrid &grid, const P3 &a, const P3 &b, double L)
+    {
+        double deviation;
+        if (grid.Nearest((a + b) * 0.5, deviation) < 0) return std::numeric_limits<double>::infinity();
+        const P3 ab = b - a;
+        const double l2 = ab.SquaredNorm();
+        if (!(l2 > 0)) return deviation;
+        grid.ForEachNear(a, b, [&](int id) {
+            const P3 m = grid.Midpoint(id);
+            const double t = ((m - a) * ab) / l2;
+            if (t <= 0 || t >= 1) return;
+            const double d = (m - (a + ab * t)).Norm();
+            if (d < kBeside * L) deviation = std::max(deviation, d);
+        });
+        return deviation;
+    }
+    static constexpr double kBeside = 0.5;
 
     // Whether the feature edge a-b lies on an original front edge (the one nearest its midpoint).
     static bool OnFront(const SegmentGrid &grid, const std::vector<char> &isFront, const P3 &a, const P3 &b)

@@ -12,7 +12,8 @@
 //   when both edges are of one kind (front or crease) and a-q stays on the curve: exactly (up to
 //   rounding) where the chain is a sharp edge of the surface, a CAD crease whose geometry is the
 //   feature; within a small chord distance where it runs over smooth surface (a straightened region
-//   boundary on a scan, itself a polyline through the input's triangles);
+//   boundary on a scan, itself a polyline through the input's triangles), of the removed vertex and
+//   of the input's curve (the chain may already be made of chords);
 // - a vertex with one or three or more feature edges (a corner or an end) never moves.
 // Every collapse is refused unless each new triangle keeps facing the input surface's normal and
 // its old orientation, stays fair, has no edge over 4/3 L, and the surface stays within 0.1 L of the
@@ -49,6 +50,9 @@ public:
     typedef vcg::tri::EdgeCollapser<MeshType, VertexPair> Collapser;
     // Whether the feature edge a-b is front (true) or a crease (false).
     typedef std::function<bool(const P3 &a, const P3 &b)> FeatureKind;
+    // How far the segment a-b strays from the input's feature curves (as they were before any
+    // collapse) that it would replace.
+    typedef std::function<double(const P3 &a, const P3 &b)> CurveDeviation;
 
     // Botsch-Kobbelt's bounds: edges below 4/5 L are collapsed, none above 4/3 L is made.
     static constexpr double kMinLength = 4.0 / 5.0;
@@ -71,7 +75,8 @@ public:
     // One pass over the vertices; features are the selected face-edges (flagged on both sides, a
     // border edge on its one side). Needs vertex-face adjacency; face-face adjacency is rebuilt.
     // Returns the number of collapses.
-    static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureKind &isFront)
+    static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureKind &isFront,
+                  const CurveDeviation &toCurves)
     {
         vcg::tri::RequireVFAdjacency(m);
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
@@ -107,7 +112,7 @@ public:
                     }
                 const double chord = sharp ? kStraightChord * std::min(Distance(p, ends[0]), Distance(p, ends[1])) : kChordTolerance * L;
                 for (int e = 0; e < 2; ++e)
-                    if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], L, chord, isFront))
+                    if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], L, chord, sharp, isFront, toCurves))
                         candidates.push_back(ends[e]);
             }
             for (VertexType *q : candidates)
@@ -161,8 +166,8 @@ private:
 
     // a-p-q, a chain of two feature edges: p may go onto q when the new edge a-q is not too long,
     // passes within maxChord of p, and both edges are of one kind.
-    static bool ChainAllows(const VertexType *p, const VertexType *a, const VertexType *q, double L, double maxChord,
-                            const FeatureKind &isFront)
+    static bool ChainAllows(const VertexType *p, const VertexType *a, const VertexType *q, double L, double maxChord, bool sharp,
+                            const FeatureKind &isFront, const CurveDeviation &toCurves)
     {
         const P3 A = Pos(a), P = Pos(p), Q = Pos(q);
         if ((Q - A).Norm() > kMaxLength * L) return false;
@@ -172,6 +177,9 @@ private:
         double chord;
         vcg::SegmentPointDistance(vcg::Segment3d(A, Q), P, closest, chord);
         if (chord > maxChord) return false;
+        // over smooth surface the chain may already be a chord of chords: the new edge is held to
+        // the input's curve itself (a sharp chain is coarsened only where straight: nothing drifts)
+        if (!sharp && toCurves(A, Q) > maxChord) return false;
         return isFront(A, P) == isFront(P, Q);
     }
 
