@@ -254,6 +254,29 @@ double SignedVolume(const TMesh &m)
     return vol;
 }
 
+// How much the total area may change only because the split's new vertices sit on the float grid:
+// a vertex on an edge (or inside a face) is off its exact place by up to kPlacementUlps ulps of its
+// coordinates (|p| 2^-23 each), and moving a vertex by d changes each incident face's area by at
+// most d times half the opposite edge. On a needle whose width is a few ulps (a grid vertex 1e-6 from
+// the line of its boundary edge) that is a few percent of its area, which no float split can avoid;
+// on ordinary meshes it is far below the relative bound. New vertices: positions not in the input.
+const double kPlacementUlps = 2;
+double FloatPlacementAreaSlack(const TMesh &m, const std::set<std::array<float, 3>> &inputPositions)
+{
+    typedef vcg::Point3d D3;
+    double slack = 0;
+    for (auto &f : m.face) {
+        if (f.IsD()) continue;
+        for (int k = 0; k < 3; ++k) {
+            const P3 &p = f.cP(k);
+            if (inputPositions.count({p[0], p[1], p[2]})) continue;
+            const double d = kPlacementUlps * std::ldexp(D3::Construct(p).Norm(), -23);
+            slack += 0.5 * (D3::Construct(f.cP((k + 1) % 3)) - D3::Construct(f.cP((k + 2) % 3))).Norm() * d;
+        }
+    }
+    return slack;
+}
+
 // Random labels: the nearest of k random seed faces (patches), or noise, or one label.
 std::vector<int> RandomLabels(const TMesh &m, Rng &rng)
 {
@@ -388,6 +411,8 @@ bool FuzzEmbedding(TMesh &m, const TMesh &poly, Rng &rng, Tally &tally)
     const Snapshot before = Snapshot::Of(m);
     const vcg_ext::MeshCheckReport in = Checks::Inspect(m);
     const double area = TotalArea(m), volume = SignedVolume(m);
+    std::set<std::array<float, 3>> inputPositions;
+    for (auto &v : m.vert) inputPositions.insert({v.cP()[0], v.cP()[1], v.cP()[2]});
     ++tally.runs[2];
     const Embedding::Result r = Embedding::Embed(m, poly, p);
     if (!r.error.empty()) {
@@ -402,7 +427,7 @@ bool FuzzEmbedding(TMesh &m, const TMesh &poly, Rng &rng, Tally &tally)
     EXPECT_EQ(out.degenerateFaces, 0);
     EXPECT_EQ(out.EulerCharacteristic(), in.EulerCharacteristic());
     EXPECT_EQ(out.components, in.components);
-    EXPECT_NEAR(TotalArea(m), area, 1e-4 * area);
+    EXPECT_NEAR(TotalArea(m), area, 1e-4 * area + FloatPlacementAreaSlack(m, inputPositions));
     if (in.IsClosed()) {
         EXPECT_NEAR(SignedVolume(m), volume, 1e-4 * std::max(1e-12, std::fabs(area) * std::sqrt(area)));
     }
