@@ -10,7 +10,8 @@
 // two-sided sampled Hausdorff distance to the input, closed 2-manifold, Euler characteristic,
 // initial front kept; MeshLab's own quad conversions (vcg BitQuadCreation) on the same split input;
 // CGAL's Variational_shape_approximation on the same mesh (when built with CGAL); and a ~1M-face
-// case (midpoint subdivision) with per-stage times and peak memory (VmHWM, reset per stage).
+// case (midpoint subdivision) with per-stage times and peak memory (VmHWM, reset per stage), and
+// optionally (--big-degenerate N) the same with N needle faces and with N exactly degenerate ones.
 //
 // Each mesh runs in a child process (fork): a crash is reported as such, and memory figures are
 // per mesh. Rows travel to the parent as tab-separated lines; the parent prints markdown tables.
@@ -76,7 +77,8 @@ std::string Count(long n) { return std::to_string(n); }
 
 // ------------------------------------------------------------------ report tables
 enum TableId {
-    T_VSA, T_SMOOTH, T_SPLIT, T_QMORPH, T_CHECKS, T_BARS, T_BITQUAD, T_CGAL_SPEED, T_CGAL_QUALITY, T_BIG, T_SCALING, T_NOTES, T_COUNT
+    T_VSA, T_SMOOTH, T_SPLIT, T_QMORPH, T_CHECKS, T_BARS, T_BITQUAD, T_CGAL_SPEED, T_CGAL_QUALITY, T_BIG, T_DEGENERATE, T_SCALING,
+    T_NOTES, T_COUNT
 };
 
 struct TableDef {
@@ -160,6 +162,15 @@ const TableDef &Def(int t)
          "mesh and the earlier stages' results are in the baseline). peak bytes / input face: the process's peak VmHWM over the "
          "4 stages / input faces (compare the two sizes for linearity). Targets: VSA per-iteration no worse than CGAL "
          "(see the CGAL table), smoothing < 1 s, split < 1 s, Q-Morph < 30 s, memory linear."},
+        {"~1M faces with degenerate faces (--big-degenerate N) - outcome, per-stage time and memory",
+         {"mesh", "faces", "injected", "degenerate (MeshChecks)", "needle area / face area", "outcome", "VSA (s)",
+          "smoothing (s)", "split (s)", "Q-Morph (s)", "pipeline (s)", "peak MiB (process)", "peak bytes / input face"},
+         "The big case with N faces made degenerate after the subdivision, spread evenly over the face order, the mesh "
+         "kept closed and 2-manifold. needles: a vertex moved to 1e-4 of its height above the opposite edge (area ratio as "
+         "written in float; a candidate whose neighbours would turn or thin is skipped); they must run. zero area: a vertex "
+         "moved onto its neighbour's position (the face and the one across that edge: zero area exactly); the pipeline "
+         "must refuse them at once with its message. Times: wall clock of the core calls (- : not reached); peak MiB: the "
+         "process's VmHWM over the stages run (input and copies included)."},
         {"Scaling - the whole pipeline on a mesh refined 1x, 4x, 16x (midpoint subdivision), 1 and 2 threads",
          {"mesh", "faces", "threads", "regions", "max dev. (deg)", "VSA (s)", "smoothing (s)", "split (s)", "Q-Morph (s)",
           "total (s)", "us / face", "peak bytes / face", "quad % (area)", "closed, Euler kept", "flipped",
@@ -207,6 +218,7 @@ struct Options {
     std::string big = "auto";      // base mesh of the ~1M case ("none": skip)
     long bigFaces = 1000000;
     bool ladder = true;            // also the ~1/4 size, for memory linearity
+    int bigDegenerate = 0;         // > 0: also the big case with that many needles, and with that many zero-area faces
     std::string bigVsa = "threshold";
     int bigRegions = 0;            // 0: the default maxRegions (200)
     bool cgal = true;
@@ -248,6 +260,10 @@ void Usage()
         "  --no-ladder         skip the ~1/4-size run of the big case (memory linearity)\n"
         "  --big-vsa MODE      threshold (default) or fixed; --big-regions K (default 200)\n"
         "  --big-only          only the big case\n"
+        "  --big-degenerate N  also run the full-size big case twice more: with N needle faces (a vertex at 1e-4 of\n"
+        "                      its height above the opposite edge: must run) and with N exactly zero-area faces (a vertex\n"
+        "                      onto its neighbour: must be refused with a clear message); outcome, per-stage times and\n"
+        "                      peak memory in their own table (default: off)\n"
         "  --no-cgal, --no-bitquad, --cgal-big-quality (CGAL incremental + our fixed-K mode on the big mesh: slow)\n"
         "  --repeats R         timing repeats on the small meshes (best time; default 3)\n"
         "  --cgal-iterations N Lloyd iterations in the CGAL comparison (default 20)\n"
@@ -594,6 +610,8 @@ struct Job {
     bool big = false;
     bool scaling = false;  // scaling run: the pipeline, per-stage times, memory, progress gaps
     int threads = 0;       // scaling run: Q-Morph's threads
+    enum Damage { Intact, Needles, ZeroArea } damage = Intact;  // big case: --big-degenerate
+    int damaged = 0;                                            // how many faces to damage
 };
 
 void RunScaling(const Job &job)
@@ -644,6 +662,13 @@ void RunJob(const Job &job, const Options &o)
         label = Fmt("%s x%d (%dk)", job.label.c_str(), 1 << (2 * steps), int(std::lround(input.fn / 1000.0)));
         Progress(label, Fmt("%d -> %d faces by %d midpoint steps in %.1f s", before, input.fn, steps, Since(t0)));
     }
+    Injected injected;
+    if (job.damage != Job::Intact) {
+        injected = InjectDegenerateFaces(input, job.damaged, job.damage == Job::ZeroArea);
+        label += Fmt(" + %d %s", injected.made, job.damage == Job::Needles ? "needles" : "zero-area");
+        Progress(label, Fmt("%d of %d faces made %s (%d candidates skipped)", injected.made, job.damaged,
+                            job.damage == Job::Needles ? "needles" : "exactly degenerate", injected.rejected));
+    }
     for (auto &f : input.face) f.Q() = 0;
     const auto inCheck = vcg_ext::MeshChecks<TMesh>::Inspect(input);
     const long eulerIn = EulerCharacteristic(input);
@@ -670,12 +695,25 @@ void RunJob(const Job &job, const Options &o)
     PipelineRun best;
     TMesh work, split;
     double peakAll = 0;
+    // --big-degenerate: what happened, stage by stage ("-": not reached)
+    auto emitDamaged = [&](const PipelineRun &r, const std::string &outcome) {
+        if (job.damage == Job::Intact) return;
+        const int reached = r.failedStage == "VSA" ? 1 : r.failedStage == "smoothing" ? 2 : r.failedStage == "split" ? 3 : 4;
+        auto stage = [&](int s, double t) { return s < reached ? Sec(t) : std::string("-"); };
+        Emit(T_DEGENERATE, {label, Count(input.fn), Fmt("%d (%d skipped)", injected.made, injected.rejected),
+                            Count(inCheck.degenerateFaces),
+                            job.damage == Job::Needles ? Fmt("%.1e - %.1e", injected.minAreaRatio, injected.maxAreaRatio) : "0",
+                            outcome, stage(0, r.tVsa), stage(1, r.tSmooth), stage(2, r.tSplit), stage(3, r.tQm), Sec(r.Total()),
+                            Fmt("%.0f", peakAll), Fmt("%.0f", peakAll * 1048576.0 / input.fn)});
+    };
     for (int rep = 0; rep < repeats; ++rep) {
         PipelineRun r;
         RunPipeline(input, vp, r, work, rep + 1 == repeats ? &split : nullptr, label, rep == 0 || job.big);
         if (!r.error.empty()) {
             Note(label, "pipeline failed at " + r.failedStage + ": " + r.error);
             Emit(T_CHECKS, {label, "failed at " + r.failedStage, "", "", "", "", "", ""});
+            for (int s = 0; s < 4; ++s) peakAll = std::max(peakAll, r.peakAfter[s]);
+            emitDamaged(r, "refused at " + r.failedStage + ": \"" + r.error + "\"");
             return;
         }
         for (int s = 0; s < 4; ++s) peakAll = std::max(peakAll, r.peakAfter[s]);
@@ -716,11 +754,13 @@ void RunJob(const Job &job, const Options &o)
         Note(label, Fmt("Q-Morph's own report (%d quads, %d triangles) differs from the mesh read back (%d, %d)",
                         r.qm.quality.quads, r.qm.quality.triangles, q.quads, q.triangles));
     std::vector<std::string> row = {label, Count(r.splitFaces), Ms(r.tQm), Count(r.qm.patches)};
+    FlipCount flipsIndependent;
     for (auto &c : QuadCells(q)) row.push_back(c);
     row.push_back(Count(r.qm.ops.failures));
     {
         vcg::tri::UpdateTopology<TMesh>::FaceFace(work);
-        const FlipCount flips = FlippedFaces(vcg_ext::QuadQuality::FromFauxMesh(work), input);
+        flipsIndependent = FlippedFaces(vcg_ext::QuadQuality::FromFauxMesh(work), input);
+        const FlipCount &flips = flipsIndependent;
         row.push_back(Fmt("%d / %d (+%d)", r.qm.quality.flippedFaces, flips.flipped, flips.ambiguous));
         row.push_back(Count(flips.folded));
     }
@@ -763,6 +803,9 @@ void RunJob(const Job &job, const Options &o)
                                                   : Fmt("NO (%ld lost, selection %s)", lost, selAfter == frontBefore ? "same" : "changed"),
                     Fmt("%.0f", peakAll)});
     const double below = q.quads ? double(q.quadsBelow03) / q.quads : 0;
+    emitDamaged(r, Fmt("ran: %d quads, %d triangles; closed 2-manifold %s, genus kept %s, front kept %s; flipped %d / %d (+%d)",
+                       q.quads, q.triangles + q.others, YesNo(closedManifold).c_str(), YesNo(genusKept).c_str(),
+                       YesNo(frontKept).c_str(), r.qm.quality.flippedFaces, flipsIndependent.flipped, flipsIndependent.ambiguous));
     const bool bars[] = {q.quadAreaFraction >= 0.95, q.quadCountFraction >= 0.90, q.invertedQuads == 0 && q.minJacobian > 0,
                          q.meanJacobian >= 0.75, below < 0.02, q.IrregularFraction() <= 0.20, hd <= 0.005,
                          closedManifold, genusKept, frontKept};
@@ -967,6 +1010,7 @@ int main(int argc, char **argv)
         else if (a == "--big-vsa") o.bigVsa = next();
         else if (a == "--big-regions") o.bigRegions = std::atoi(next().c_str());
         else if (a == "--big-only") o.onlyBig = true;
+        else if (a == "--big-degenerate") o.bigDegenerate = std::max(0, std::atoi(next().c_str()));
         else if (a == "--no-cgal") o.cgal = false;
         else if (a == "--cgal-big-quality") o.cgalBigQuality = true;
         else if (a == "--no-bitquad") o.bitquad = false;
@@ -1061,6 +1105,13 @@ int main(int argc, char **argv)
             probe.Clear();
             if (i == 0 && o.ladder && steps >= 2) jobs.push_back({BaseName(path), path, steps - 1, true});
             jobs.push_back({BaseName(path), path, steps, true});
+            for (Job::Damage d : {Job::Needles, Job::ZeroArea}) {
+                if (o.bigDegenerate <= 0) break;
+                Job j{BaseName(path), path, steps, true};
+                j.damage = d;
+                j.damaged = o.bigDegenerate;
+                jobs.push_back(j);
+            }
         }
     }
 

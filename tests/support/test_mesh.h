@@ -175,11 +175,17 @@ inline bool LoadOff(TMesh &m, const std::string &path)
 // Folders set by CMake: meshes extracted from Debian packages at set-up, and tests/data.
 inline std::string MeshDir() { return QMF_TEST_MESH_DIR; }
 
+// In double: a float cross product of a long thin triangle is off by about an ulp of its edges
+// (1e-8 on a unit mesh), more than a needle's whole area may change by.
 inline double TotalArea(const TMesh &m)
 {
+    typedef vcg::Point3d D3;
     double a = 0;
     for (auto &f : m.face)
-        if (!f.IsD()) a += 0.5 * vcg::Norm((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0)));
+        if (!f.IsD()) {
+            const D3 p0 = D3::Construct(f.cP(0)), p1 = D3::Construct(f.cP(1)), p2 = D3::Construct(f.cP(2));
+            a += 0.5 * vcg::Norm((p1 - p0) ^ (p2 - p0));
+        }
     return a;
 }
 

@@ -254,6 +254,29 @@ double SignedVolume(const TMesh &m)
     return vol;
 }
 
+// How much the total area may change only because the split's new vertices sit on the float grid:
+// a vertex on an edge (or inside a face) is off its exact place by up to kPlacementUlps ulps of its
+// coordinates (|p| 2^-23 each), and moving a vertex by d changes each incident face's area by at
+// most d times half the opposite edge. On a needle whose width is a few ulps (a grid vertex 1e-6 from
+// the line of its boundary edge) that is a few percent of its area, which no float split can avoid;
+// on ordinary meshes it is far below the relative bound. New vertices: positions not in the input.
+const double kPlacementUlps = 2;
+double FloatPlacementAreaSlack(const TMesh &m, const std::set<std::array<float, 3>> &inputPositions)
+{
+    typedef vcg::Point3d D3;
+    double slack = 0;
+    for (auto &f : m.face) {
+        if (f.IsD()) continue;
+        for (int k = 0; k < 3; ++k) {
+            const P3 &p = f.cP(k);
+            if (inputPositions.count({p[0], p[1], p[2]})) continue;
+            const double d = kPlacementUlps * std::ldexp(D3::Construct(p).Norm(), -23);
+            slack += 0.5 * (D3::Construct(f.cP((k + 1) % 3)) - D3::Construct(f.cP((k + 2) % 3))).Norm() * d;
+        }
+    }
+    return slack;
+}
+
 // Random labels: the nearest of k random seed faces (patches), or noise, or one label.
 std::vector<int> RandomLabels(const TMesh &m, Rng &rng)
 {
@@ -388,6 +411,8 @@ bool FuzzEmbedding(TMesh &m, const TMesh &poly, Rng &rng, Tally &tally)
     const Snapshot before = Snapshot::Of(m);
     const vcg_ext::MeshCheckReport in = Checks::Inspect(m);
     const double area = TotalArea(m), volume = SignedVolume(m);
+    std::set<std::array<float, 3>> inputPositions;
+    for (auto &v : m.vert) inputPositions.insert({v.cP()[0], v.cP()[1], v.cP()[2]});
     ++tally.runs[2];
     const Embedding::Result r = Embedding::Embed(m, poly, p);
     if (!r.error.empty()) {
@@ -402,7 +427,7 @@ bool FuzzEmbedding(TMesh &m, const TMesh &poly, Rng &rng, Tally &tally)
     EXPECT_EQ(out.degenerateFaces, 0);
     EXPECT_EQ(out.EulerCharacteristic(), in.EulerCharacteristic());
     EXPECT_EQ(out.components, in.components);
-    EXPECT_NEAR(TotalArea(m), area, 1e-4 * area);
+    EXPECT_NEAR(TotalArea(m), area, 1e-4 * area + FloatPlacementAreaSlack(m, inputPositions));
     if (in.IsClosed()) {
         EXPECT_NEAR(SignedVolume(m), volume, 1e-4 * std::max(1e-12, std::fabs(area) * std::sqrt(area)));
     }
@@ -494,10 +519,40 @@ void FuzzQMorph(TMesh &m, Rng &rng, Tally &tally)
     }
 }
 
+// One random case from its seed: the four steps in a row, each also on independent random input
+// (labels, polylines, edge selections), so a refusal early in the chain does not hide the later steps.
+void RunCase(unsigned seed, Tally &tally)
+{
+    Rng rng(seed);
+    TMesh m;
+    std::string what;
+    RandomMesh(m, rng, what);
+    SCOPED_TRACE("QMF_FUZZ_SEED=" + std::to_string(seed) + " QMF_FUZZ_RUNS=1: " + what);
+    const bool hasFaces = m.fn > 0;
+
+    const bool segmented = FuzzVsa(m, rng, tally);
+    TMesh poly;
+    bool haveFront = false;
+    if (hasFaces) {
+        std::vector<int> labels;
+        if (!segmented || Chance(rng, 0.3)) labels = RandomLabels(m, rng);
+        else vcg_ext::RegionIds<TMesh>::Read(m, labels);
+        haveFront = FuzzSmoothing(m, labels, rng, poly, tally);
+        if (!haveFront || Chance(rng, 0.3)) RandomPolyline(m, rng, poly);
+    }
+    TMesh copy;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(copy, m);
+    const bool split = hasFaces && FuzzEmbedding(m, poly, rng, tally);
+    if (!split || Chance(rng, 0.3)) {
+        m.Clear();
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, copy);
+        if (hasFaces) SelectRandomEdges(m, rng);
+    }
+    FuzzQMorph(m, rng, tally);
+}
+
 }  // namespace
 
-// The four steps in a row on each random case, each also on independent random input (labels,
-// polylines, edge selections), so a refusal early in the chain does not hide the later steps.
 TEST(Fuzz, FourStepsSurviveRandomInput)
 {
     const int runs = EnvInt("QMF_FUZZ_RUNS", kDefaultRuns);
@@ -508,33 +563,7 @@ TEST(Fuzz, FourStepsSurviveRandomInput)
     int failures = 0;                                          // (each prints the seed that replays it)
     for (int i = 0; i < runs && failures < maxFailing; ++i) {
         const int partsBefore = result.total_part_count();
-        const unsigned seed = seed0 + unsigned(i);
-        Rng rng(seed);
-        TMesh m;
-        std::string what;
-        RandomMesh(m, rng, what);
-        SCOPED_TRACE("QMF_FUZZ_SEED=" + std::to_string(seed) + " QMF_FUZZ_RUNS=1: " + what);
-        const bool hasFaces = m.fn > 0;
-
-        const bool segmented = FuzzVsa(m, rng, tally);
-        TMesh poly;
-        bool haveFront = false;
-        if (hasFaces) {
-            std::vector<int> labels;
-            if (!segmented || Chance(rng, 0.3)) labels = RandomLabels(m, rng);
-            else vcg_ext::RegionIds<TMesh>::Read(m, labels);
-            haveFront = FuzzSmoothing(m, labels, rng, poly, tally);
-            if (!haveFront || Chance(rng, 0.3)) RandomPolyline(m, rng, poly);
-        }
-        TMesh copy;
-        vcg::tri::Append<TMesh, TMesh>::MeshCopy(copy, m);
-        const bool split = hasFaces && FuzzEmbedding(m, poly, rng, tally);
-        if (!split || Chance(rng, 0.3)) {
-            m.Clear();
-            vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, copy);
-            if (hasFaces) SelectRandomEdges(m, rng);
-        }
-        FuzzQMorph(m, rng, tally);
+        RunCase(seed0 + unsigned(i), tally);
         failures += result.total_part_count() > partsBefore;
     }
     std::printf("[ fuzz ] %d cases from seed %u (%d failing): VSA %d/%d succeeded, smoothing %d/%d, splitting %d/%d, Q-Morph %d/%d "
@@ -546,4 +575,15 @@ TEST(Fuzz, FourStepsSurviveRandomInput)
     if (runs >= kDefaultRuns) {
         for (int s = 0; s < 4; ++s) EXPECT_GT(tally.ok[s], runs / 20) << "step " << s + 1 << " almost never succeeds";
     }
+}
+
+// Cases longer runs found, kept as they were fixed: a 5-edge template's triangle standing on edge
+// over an input edge on a flipped coarse sphere (counted flipped or not by which of two equally close
+// triangles an independent check takes; Q-Morph's triangles now face both); a needle split whose
+// area the test measured in float (off by more than the split changed it).
+TEST(Fuzz, EarlierFindingsStayFixed)
+{
+    Tally tally;
+    for (unsigned seed : {101375u, 101186u}) RunCase(seed, tally);
+    EXPECT_EQ(tally.ok[3], 2) << "both reach Q-Morph's success path";
 }

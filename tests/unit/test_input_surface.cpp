@@ -60,3 +60,21 @@ TEST(InputSurface, FlatSurfaceAlwaysDecides)
     vcg_ext::InputSurface<TMesh> input(m);
     EXPECT_GT(input.NormalUnder(D3(0.4, 0.4, 0.3), D3(0, 0, -1))[2], 0.99);
 }
+
+// A roof: two sheets meeting at a ridge (y = 0.5) at 40 degrees from the horizontal. Above the ridge
+// both are as close; a direction facing one and not the other (a face standing on edge over the
+// ridge) faces not every closest triangle, whichever of them the closest-point search returns.
+TEST(InputSurface, OnEdgeOverARidgeFacesNotEveryClosestTriangle)
+{
+    TMesh m;
+    const float rise = 0.5f * std::tan(float(40 * M_PI / 180));
+    Build(m, {{0, 0, 0}, {1, 0, 0}, {1, 0.5f, rise}, {0, 0.5f, rise}, {1, 1, 0}, {0, 1, 0}},
+          {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}, {3, 4, 5}});
+    vcg_ext::InputSurface<TMesh> input(m);
+    const D3 aboveRidge(0.5, 0.5, rise + 0.1), tiltedToOneSide(0, 0.8, 0.6), up(0, 0, 1);
+    EXPECT_TRUE(input.FacesEveryClosest(aboveRidge, up));
+    EXPECT_FALSE(input.FacesEveryClosest(aboveRidge, tiltedToOneSide));
+    EXPECT_FALSE(input.FacesEveryClosest(aboveRidge, D3(0, -0.8, 0.6)));
+    // Above one sheet only that sheet decides.
+    EXPECT_TRUE(input.FacesEveryClosest(D3(0.5, 0.8, 0.3), tiltedToOneSide));
+}

@@ -274,6 +274,9 @@ private:
                 mm.judge = [&input, side, patchIsInput](const P3 &p, double near) {  // read-only queries: no lock
                     return input.NormalUnder(p, P3(0, 0, 0), patchIsInput ? near : -1) * side;
                 };
+                mm.facesEveryClosest = [&input, side](const P3 &p, const P3 &direction) {
+                    return input.FacesEveryClosest(p, direction * side);
+                };
                 mm.SetKeys(in.globalOf);
                 SurfaceProjector surface;
                 surface.Build(in.points, in.tris);

@@ -99,6 +99,31 @@ public:
         return near ? P3::Construct(Normal(near)) : own;
     }
 
+    // Whether `direction` points the way of every input triangle closest to p: when p is as close to
+    // several (up to kTieDiagonal, e.g. its closest point is on an edge they share), any of them may
+    // be the one an independent check finds, so a face standing on edge over that edge (facing one,
+    // away from the other) would count as flipped or not by chance. Triangles facing the other way
+    // than the closest (across a crease sharper than 90 degrees) are left out, as NormalUnder leaves
+    // them. True when there is no triangle. `within`: as for NormalUnder.
+    bool FacesEveryClosest(const P3 &p, const P3 &direction, double within = -1)
+    {
+        CoordType closest;
+        const CoordType q = CoordType::Construct(p);
+        const FaceType *near = Closest(q, closest, within);
+        if (!near) return true;
+        if (!(P3::Construct(Normal(near)) * direction > 0)) return false;
+        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag());
+        std::vector<FaceType *> around;
+        std::vector<ScalarType> distances;
+        std::vector<CoordType> points;
+        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
+        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        for (const FaceType *f : around)
+            if (f->cN() * near->cN() >= 0 && !(P3::Construct(Normal(f)) * direction > 0)) return false;
+        return true;
+    }
+
     // Per face of pm: the unit normal of the input triangle closest to its corner centroid, or
     // own[i] when that triangle borders a crease sharper than 90 degrees (own: per face, or empty
     // for the face's own normal).

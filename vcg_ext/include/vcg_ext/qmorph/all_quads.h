@@ -10,9 +10,16 @@
 // and the face centre are moved onto the input surface, unless that would turn one of the new quads
 // against the input surface's normal (then they stay where they are). Region ids (face quality)
 // are kept per face.
+//
+// Orientation: a consistently flipped mesh must give the same split mirrored, bit for bit. Every
+// polygon is read from its lowest vertex on, new points are numbered by edge key and polygon, sums
+// of points are taken in vertex index order and each new quad's corners are also visited from its
+// lower-numbered side, so the flipped copy makes the same points in the same order and the same
+// quads reversed (normals exactly negated, as the input surface's then are too).
 #ifndef VCG_EXT_QMORPH_ALL_QUADS_H
 #define VCG_EXT_QMORPH_ALL_QUADS_H
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <unordered_map>
@@ -68,13 +75,20 @@ public:
         const size_t oldVertices = pos.size();
         std::vector<P3> straight;  // per new point, its place before it was moved onto the surface
         std::unordered_map<uint64_t, int> midpoint;
-        for (const auto &e : sides) {
-            const int a = int(e.first >> 32), b = int(e.first & 0xffffffffu);
+        // by key, not in the map's order (which follows the order the edges were met in: flipped
+        // polygons meet them otherwise)
+        std::vector<uint64_t> edges;
+        edges.reserve(sides.size());
+        for (const auto &e : sides) edges.push_back(e.first);
+        std::sort(edges.begin(), edges.end());
+        for (uint64_t key : edges) {
+            const std::array<int, 2> &side = sides[key];
+            const int a = int(key >> 32), b = int(key & 0xffffffffu);
             P3 mid = (pos[a] + pos[b]) * 0.5;
             straight.push_back(mid);
-            const bool sharp = e.second[1] < 0 || normal[e.second[0]] * normal[e.second[1]] < creaseCos;
-            if (!sharp && !selected.count(e.first)) mid = OnSurface(surface, mid, normal[e.second[0]]);
-            midpoint[e.first] = int(pos.size());
+            const bool sharp = side[1] < 0 || normal[side[0]] * normal[side[1]] < creaseCos;
+            if (!sharp && !selected.count(key)) mid = OnSurface(surface, mid, normal[side[0]]);
+            midpoint[key] = int(pos.size());
             pos.push_back(mid);
         }
         // face centres and the new quads (corner, midpoint, centre, midpoint)
@@ -85,13 +99,14 @@ public:
         std::vector<NewQuad> quads;
         for (size_t i = 0; i < polygons.size(); ++i) {
             const Polygon &p = polygons[i];
+            const std::vector<int> byIndex = CornersByIndex(p);
             P3 centre(0, 0, 0);
-            for (int k = 0; k < p.size; ++k) centre += pos[p.v[k]];
+            for (int k : byIndex) centre += pos[p.v[k]];
             centre /= double(p.size);
             const int c = int(pos.size());
             straight.push_back(centre);
             pos.push_back(OnSurface(surface, centre, normal[i]));
-            for (int k = 0; k < p.size; ++k) {
+            for (int k : byIndex) {  // the same quads in the same order, whichever way p runs
                 const int prev = p.v[(k + p.size - 1) % p.size], here = p.v[k], next = p.v[(k + 1) % p.size];
                 quads.push_back({{here, midpoint[EdgeKey(here, next)], c, midpoint[EdgeKey(prev, here)]}, p.quality});
             }
@@ -101,8 +116,11 @@ public:
         for (int round = 0; round < kUnprojectRounds; ++round) {
             int reverted = 0;
             for (const NewQuad &q : quads) {
-                const P3 corners[4] = {pos[q.v[0]], pos[q.v[1]], pos[q.v[2]], pos[q.v[3]]};
+                // from the old corner towards the lower-numbered midpoint: the same array both ways round
+                const bool backwards = q.v[3] < q.v[1];
+                const P3 corners[4] = {pos[q.v[0]], pos[q.v[backwards ? 3 : 1]], pos[q.v[2]], pos[q.v[backwards ? 1 : 3]]};
                 P3 n = VectorArea(corners, 4);
+                if (backwards) n = -n;
                 const P3 centroid = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
                 if (n.Norm() > 0 && surface.NormalUnder(centroid, n / n.Norm()) * n > 0 && !IsFolded(corners)) continue;
                 for (int k = 1; k < 4; ++k) {
@@ -163,15 +181,28 @@ private:
         return EdgeKey(int(vcg::tri::Index(m, a)), int(vcg::tri::Index(m, b)));
     }
 
-    // The faces of m as polygons (QuadQuality::ForEachFauxPolygon), with their region ids.
+    // The faces of m as polygons (QuadQuality::ForEachFauxPolygon), each from its lowest vertex on
+    // (a quad's first corner depends on which of its triangles comes first), with their region ids.
     static std::vector<Polygon> Gather(MeshType &m)
     {
         const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
         std::vector<Polygon> polygons;
         QuadQuality::ForEachFauxPolygon(m, [&](FaceType &f, const std::array<int, 4> &corners, int n) {
-            polygons.push_back({corners, n, hasQuality ? float(f.Q()) : 0.f});
+            const int r = int(std::min_element(corners.begin(), corners.begin() + n) - corners.begin());
+            std::array<int, 4> v{{-1, -1, -1, -1}};
+            for (int k = 0; k < n; ++k) v[k] = corners[(r + k) % n];
+            polygons.push_back({v, n, hasQuality ? float(f.Q()) : 0.f});
         });
         return polygons;
+    }
+
+    // The corner positions of p in the order of their vertex indices.
+    static std::vector<int> CornersByIndex(const Polygon &p)
+    {
+        std::vector<int> k(p.size);
+        for (int i = 0; i < p.size; ++i) k[i] = i;
+        std::sort(k.begin(), k.end(), [&](int a, int b) { return p.v[a] < p.v[b]; });
+        return k;
     }
 
     static P3 PolygonNormal(const std::vector<P3> &pos, const Polygon &p)

@@ -66,6 +66,10 @@ public:
     // every orientation judgement (see InputSurfaceNormalAt). The second argument: how far the
     // patch's surface is from the point, where the search starts (< 0: unknown).
     std::function<P3(const P3 &, double)> judge;
+    // Optional, with the judge: whether a direction (a new triangle's normal) faces every input
+    // triangle as close to a point as the judge's (a tie the judge breaks one way, an independent
+    // check perhaps the other).
+    std::function<bool(const P3 &, const P3 &)> facesEveryClosest;
 
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }

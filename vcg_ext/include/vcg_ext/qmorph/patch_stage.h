@@ -188,7 +188,9 @@ protected:
         if (!(m.DistinctNodes({a, b, c}) && nl > 0 && (u ^ v) * n > kMinSine * l2 * nl)) return false;
         for (int x : {a, b, c})  // nor upside down at a corner (a triangle across a tight bend)
             if ((u ^ v) * m.InputNormal(x) <= 0) return false;
-        return true;
+        // nor standing on edge over an input edge, facing one of its triangles and not the other (a
+        // template's triangle across a front corner of 180 degrees on a coarse sphere)
+        return !m.facesEveryClosest || m.facesEveryClosest((m.pos[a] + m.pos[b] + m.pos[c]) / 3.0, u ^ v);
     }
 
     // Shape of any face against reference normal n: a quad's QuadShape, a triangle's quality.
