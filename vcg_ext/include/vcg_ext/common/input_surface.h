@@ -112,13 +112,7 @@ public:
         const FaceType *near = Closest(q, closest, within);
         if (!near) return true;
         if (!(P3::Construct(Normal(near)) * direction > 0)) return false;
-        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag());
-        std::vector<FaceType *> around;
-        std::vector<ScalarType> distances;
-        std::vector<CoordType> points;
-        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
-        vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
-        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        const std::vector<FaceType *> around = TiedWithClosest(q, closest);
         for (const FaceType *f : around)
             if (f->cN() * near->cN() >= 0 && !(P3::Construct(Normal(f)) * direction > 0)) return false;
         return true;
@@ -164,6 +158,19 @@ private:
     // A search near a known surface goes a little beyond it (float rounding of the copy).
     static constexpr double kNearSearchSlack = 1.01;
 
+    // The triangles as close to q as the closest one (at `closest`), up to the tie slack.
+    std::vector<FaceType *> TiedWithClosest(const CoordType &q, const CoordType &closest)
+    {
+        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag());
+        std::vector<FaceType *> around;
+        std::vector<ScalarType> distances;
+        std::vector<CoordType> points;
+        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
+        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        return around;
+    }
+
     // The input triangle closest to p, or null when there is none or p is as close to a triangle
     // facing the other way across a crease sharper than 90 degrees.
     const FaceType *UnambiguousClosest(const P3 &p, double within = -1)
@@ -172,13 +179,7 @@ private:
         const CoordType q = CoordType::Construct(p);
         const FaceType *near = Closest(q, closest, within);
         if (!near || !besideSharpCrease[vcg::tri::Index(mesh, near)]) return near;
-        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag());
-        std::vector<FaceType *> around;
-        std::vector<ScalarType> distances;
-        std::vector<CoordType> points;
-        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
-        vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
-        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        const std::vector<FaceType *> around = TiedWithClosest(q, closest);
         for (const FaceType *f : around)
             if (f->cN() * near->cN() < 0) return nullptr;
         return near;

@@ -52,18 +52,11 @@ public:
     {
         int best = -1;
         dist = 1e300;
-        const long cx = Cell(p[0]), cy = Cell(p[1]), cz = Cell(p[2]);
-        for (long x = cx - 1; x <= cx + 1; ++x)
-            for (long y = cy - 1; y <= cy + 1; ++y)
-                for (long z = cz - 1; z <= cz + 1; ++z) {
-                    auto it = cells.find(Key(x, y, z));
-                    if (it == cells.end()) continue;
-                    for (int id : it->second) {
-                        if (!accept(id)) continue;
-                        const double d = Distance(p, id);
-                        if (d < dist) { dist = d; best = id; }
-                    }
-                }
+        ForEachAround(p, [&](int id) {
+            if (!accept(id)) return;
+            const double d = Distance(p, id);
+            if (d < dist) { dist = d; best = id; }
+        });
         return best;
     }
 
@@ -73,21 +66,12 @@ public:
     {
         std::vector<int> seen;
         const int steps = std::max(1, int(std::ceil(2 * (b - a).Norm() / h)));
-        for (int s = 0; s <= steps; ++s) {
-            const P3 p = a + (b - a) * (double(s) / steps);
-            const long cx = Cell(p[0]), cy = Cell(p[1]), cz = Cell(p[2]);
-            for (long x = cx - 1; x <= cx + 1; ++x)
-                for (long y = cy - 1; y <= cy + 1; ++y)
-                    for (long z = cz - 1; z <= cz + 1; ++z) {
-                        auto it = cells.find(Key(x, y, z));
-                        if (it == cells.end()) continue;
-                        for (int id : it->second)
-                            if (std::find(seen.begin(), seen.end(), id) == seen.end()) {
-                                seen.push_back(id);
-                                visit(id);
-                            }
-                    }
-        }
+        for (int s = 0; s <= steps; ++s)
+            ForEachAround(a + (b - a) * (double(s) / steps), [&](int id) {
+                if (std::find(seen.begin(), seen.end(), id) != seen.end()) return;
+                seen.push_back(id);
+                visit(id);
+            });
     }
 
     P3 Midpoint(int id) const { return (from[id] + to[id]) * 0.5; }
@@ -104,6 +88,20 @@ public:
     }
 
 private:
+    // Every entry of the cells within one cell of p's (a segment may come more than once).
+    template <class Visit>
+    void ForEachAround(const P3 &p, const Visit &visit) const
+    {
+        const long cx = Cell(p[0]), cy = Cell(p[1]), cz = Cell(p[2]);
+        for (long x = cx - 1; x <= cx + 1; ++x)
+            for (long y = cy - 1; y <= cy + 1; ++y)
+                for (long z = cz - 1; z <= cz + 1; ++z) {
+                    auto it = cells.find(Key(x, y, z));
+                    if (it == cells.end()) continue;
+                    for (int id : it->second) visit(id);
+                }
+    }
+
     long Cell(double x) const { return long(std::floor(x / h)); }
     uint64_t Key(const P3 &p) const { return Key(Cell(p[0]), Cell(p[1]), Cell(p[2])); }
     static uint64_t Key(long x, long y, long z)
