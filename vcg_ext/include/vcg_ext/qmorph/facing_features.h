@@ -13,6 +13,7 @@
 #define VCG_EXT_QMORPH_FACING_FEATURES_H
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
@@ -21,6 +22,7 @@
 #include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <vcg_ext/common/edge_key.h>
 #include <vcg_ext/common/segment_grid.h>
 
 namespace vcg_ext {
@@ -50,6 +52,12 @@ public:
     // vertices of the other rim at most.
     static constexpr int kMaxPasses = 8;
 
+    // Whether edge i of f is a feature: selected on either side (needs face-face adjacency).
+    static bool IsFeature(const FaceType &f, int i)
+    {
+        return f.IsFaceEdgeS(i) || (f.cFFp(i) != &f && f.cFFp(i)->IsFaceEdgeS(f.cFFi(i)));
+    }
+
     // Features are the selected face-edges (flagged on both sides, a border edge on its one side).
     // Needs face-face and vertex-face adjacency (both rebuilt). Returns the vertices added.
     static int Do(MeshType &m, double L)
@@ -64,26 +72,19 @@ public:
     }
 
 private:
-    // Edges by their vertices' indices: RefineE reallocates the vertices between asking which edges
-    // to split and placing the new vertices.
-    typedef std::pair<size_t, size_t> EdgeKey;
-    static EdgeKey Key(const MeshType &m, const VertexType *a, const VertexType *b)
+    // Edges by their vertices' indices (common/edge_key.h): RefineE reallocates the vertices between
+    // asking which edges to split and placing the new vertices.
+    static uint64_t Key(const MeshType &m, const VertexType *a, const VertexType *b)
     {
-        const size_t i = vcg::tri::Index(m, a), j = vcg::tri::Index(m, b);
-        return i < j ? EdgeKey(i, j) : EdgeKey(j, i);
+        return EdgeKey(int(vcg::tri::Index(m, a)), int(vcg::tri::Index(m, b)));
     }
     static P3 Pos(const VertexType *v) { return P3::Construct(v->cP()); }
-
-    static bool IsFeature(const FaceType &f, int i)
-    {
-        return f.IsFaceEdgeS(i) || (f.cFFp(i) != &f && f.cFFp(i)->IsFaceEdgeS(f.cFFi(i)));
-    }
 
     // vcglib's midpoint split, moved to the foot this pass chose for the edge.
     struct FootPoint : public vcg::tri::MidPoint<MeshType>
     {
-        const std::map<EdgeKey, P3> *feet;
-        explicit FootPoint(MeshType *m, const std::map<EdgeKey, P3> *f) : vcg::tri::MidPoint<MeshType>(m), feet(f) {}
+        const std::map<uint64_t, P3> *feet;
+        explicit FootPoint(MeshType *m, const std::map<uint64_t, P3> *f) : vcg::tri::MidPoint<MeshType>(m), feet(f) {}
         void operator()(VertexType &nv, vcg::face::Pos<FaceType> ep)
         {
             vcg::tri::MidPoint<MeshType>::operator()(nv, ep);
@@ -93,7 +94,7 @@ private:
     struct IsChosen
     {
         const MeshType *m;
-        const std::map<EdgeKey, P3> *feet;
+        const std::map<uint64_t, P3> *feet;
         bool operator()(vcg::face::Pos<FaceType> &ep) const { return feet->count(Key(*m, ep.V(), ep.VFlip())) > 0; }
     };
 
@@ -118,8 +119,8 @@ private:
         }
         // every feature vertex's foot on the nearest feature edge across a strip; per edge, the
         // foot nearest its middle
-        std::map<EdgeKey, P3> feet;
-        std::map<EdgeKey, double> offCentre;
+        std::map<uint64_t, P3> feet;
+        std::map<uint64_t, double> offCentre;
         std::vector<VertexType *> star;
         for (size_t vi = 0; vi < m.vert.size(); ++vi) {
             VertexType *v = &m.vert[vi];
@@ -144,7 +145,7 @@ private:
             vcg::face::VVStarVF<FaceType>(v, star);
             if (std::find(star.begin(), star.end(), a) == star.end() && std::find(star.begin(), star.end(), b) == star.end())
                 continue;
-            const EdgeKey key = Key(m, a, b);
+            const uint64_t key = Key(m, a, b);
             const double off = std::abs(fromA - fromB);
             auto it = offCentre.find(key);
             if (it != offCentre.end() && it->second <= off) continue;

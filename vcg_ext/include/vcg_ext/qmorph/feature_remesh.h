@@ -220,10 +220,7 @@ private:
         return p.stat.splitNum;
     }
 
-    static bool IsFeature(const FaceType &f, int i)
-    {
-        return f.IsFaceEdgeS(i) || (f.cFFp(i) != &f && f.cFFp(i)->IsFaceEdgeS(f.cFFi(i)));
-    }
+    static bool IsFeature(const FaceType &f, int i) { return FacingFeatures<MeshType>::IsFeature(f, i); }
 
     static P3 Pos(const VertexType *v) { return P3::Construct(v->cP()); }
     static P3 UnitNormal(const FaceType &f)  // in double, as the partition's crease test
