@@ -100,10 +100,10 @@ public:
             return Format("Q-Morph: %d patches (%d without front), %d initial front edges (%d of them unselected sharp creases); "
                           "%d quads, %d triangles left (%.1f%% of the area in quads); %d quads formed, %d by templates, %d seams, "
                           "%d transition seams, %d transition splits, %d triangle pairs merged, %d doublets removed, %d edges "
-                          "turned, %d quads collapsed and %d opened for valence; %d swaps, %d splits; %.3f s",
+                          "turned, %d quads collapsed and %d opened for valence, %d cavities re-meshed as grids; %d swaps, %d splits; %.3f s",
                           patches, patchesWithoutFront, initialFrontEdges, creaseEdges, quads, triangles, 100 * quality.quadAreaFraction,
                           ops.quadsFormed, ops.templates, ops.seams, ops.transitionSeams, ops.transitionSplits, ops.pairedTriangles,
-                          ops.doublets, ops.valenceTurns, ops.diagonalCollapses, ops.quadsOpened, ops.swaps, ops.splits, seconds);
+                          ops.doublets, ops.valenceTurns, ops.diagonalCollapses, ops.quadsOpened, ops.cavities, ops.swaps, ops.splits, seconds);
         }
         // The re-meshing in one line; empty when the patches were not re-meshed.
         std::string RemeshSummary() const

@@ -13,6 +13,7 @@
 #include <climits>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -489,11 +490,12 @@ public:
     }
 
     // Replaces the faces of a disk-shaped region bounded (on their left) by the half-edges
-    // `loop`, in order, by new polygons given as lists of loop positions (counter-clockwise).
-    // Loop half-edges are reused for the polygon sides they cover; diagonals get new half-edges.
-    // Inner vertices are removed. Returns the first new face.
+    // `loop`, in order, by new polygons given as lists of positions (counter-clockwise): position
+    // i < loop.size() is the origin of loop[i], position loop.size() + k is the node added[k] (made
+    // by AddVertex, inside the region). Loop half-edges are reused for the polygon sides they
+    // cover; other sides get new half-edges. Inner vertices are removed. Returns the first new face.
     int ReplaceRegion(const std::vector<int> &loop, const std::vector<int> &faces, const std::vector<int> &inner,
-                      const std::vector<std::vector<int>> &polygons, int level)
+                      const std::vector<std::vector<int>> &polygons, int level, const std::vector<int> &added = {})
     {
         for (int f : faces) {
             int h = faceHe[f];
@@ -506,7 +508,9 @@ public:
         }
         for (int v : inner) { vertAlive[v] = 0; vertHe[v] = -1; }
         const int n = int(loop.size());
-        std::vector<std::array<int, 3>> diagonals;  // (from position, to position, half-edge)
+        auto node = [&](int i) { return i < n ? Org(loop[i]) : added[i - n]; };
+        std::map<std::pair<int, int>, int> sides;  // new half-edges by (from position, to position)
+        std::vector<int> addedHe(added.size(), -1);
         int first = FaceCount();
         for (const auto &poly : polygons) {
             int f = FaceCount();
@@ -516,15 +520,16 @@ public:
             std::vector<int> hs;
             for (size_t k = 0; k < poly.size(); ++k) {
                 int i = poly[k], j = poly[(k + 1) % poly.size()];
-                if (j == (i + 1) % n) { hs.push_back(loop[i]); continue; }
+                if (i < n && j == (i + 1) % n) { hs.push_back(loop[i]); continue; }
                 int h = HalfEdgeCount();
-                heVert.push_back(Org(loop[i]));
+                heVert.push_back(node(i));
                 heNext.push_back(-1); hePrev.push_back(-1); heTwin.push_back(-1); heFace.push_back(-1);
                 heInitial.push_back(0);
                 hs.push_back(h);
-                for (auto &d : diagonals)
-                    if (d[0] == j && d[1] == i) Link(d[2], h);
-                diagonals.push_back({i, j, h});
+                const auto twin = sides.find({j, i});
+                if (twin != sides.end()) Link(twin->second, h);
+                sides[{i, j}] = h;
+                if (i >= n) addedHe[i - n] = h;
             }
             for (size_t k = 0; k < hs.size(); ++k) {
                 heNext[hs[k]] = hs[(k + 1) % hs.size()];
@@ -534,6 +539,7 @@ public:
             faceHe[f] = hs[0];
         }
         for (int h : loop) SetVertexHe(Org(h), h);
+        for (size_t k = 0; k < added.size(); ++k) SetVertexHe(added[k], addedHe[k]);
         return first;
     }
 

@@ -11,6 +11,7 @@
 
 #include <vector>
 
+#include <vcg_ext/qmorph/cavity_patterns.h>
 #include <vcg_ext/qmorph/front_advance.h>
 #include <vcg_ext/qmorph/leftover_triangles.h>
 #include <vcg_ext/qmorph/node_placement.h>
@@ -45,6 +46,7 @@ public:
                 cleanup.Round([&] { leftovers.DissolveDoublets(); });
                 if (p.smoothing) placement.SmoothAll(true);
             }
+            CavityPatterns(context).Run();
         }
         if (p.smoothing) {
             for (int it = 0; it < p.finalSmoothing; ++it) placement.SmoothAll(true);  // topology is final: keep edges on the surface

@@ -40,6 +40,7 @@ struct PatchStats {
     int quadsFormed = 0, templates = 0, swaps = 0, splits = 0, failures = 0;
     int pairedTriangles = 0, doublets = 0, iterations = 0, valenceTurns = 0, seams = 0;
     int transitionSeams = 0, transitionSplits = 0, diagonalCollapses = 0, quadsOpened = 0;
+    int cavities = 0;  // disks of quads re-meshed as grids
 
     PatchStats &operator+=(const PatchStats &o)
     {
@@ -48,6 +49,7 @@ struct PatchStats {
         iterations += o.iterations; valenceTurns += o.valenceTurns; seams += o.seams;
         transitionSeams += o.transitionSeams; transitionSplits += o.transitionSplits;
         diagonalCollapses += o.diagonalCollapses; quadsOpened += o.quadsOpened;
+        cavities += o.cavities;
         return *this;
     }
 };
@@ -121,6 +123,27 @@ protected:
     static constexpr double kFairQuad = 0.3;
     // Node moves: no face around may fall to this quality (folded), nor below min(worst before, fair).
     static constexpr double kMinMoveQuality = 1e-3, kFairMoveQuality = 0.2;
+
+    // Squared distance of valence `val` at node v from its ideal (4 for nodes made after `ideal`).
+    static double ValenceDeviation(const std::vector<int> &ideal, int v, int val)
+    {
+        const double d = val - (v < int(ideal.size()) ? ideal[v] : 4);
+        return d * d;
+    }
+
+    // Ideal valence per node: 4 inside; on the patch boundary, one more than the number of right
+    // angles that fit in the node's angle.
+    std::vector<int> IdealValences() const
+    {
+        std::vector<int> ideal(m.VertexCount(), 4);
+        for (int v = 0; v < m.VertexCount(); ++v) {
+            if (!m.vertAlive[v] || !m.OnBoundary(v)) continue;
+            double angle = 0;
+            m.ForEachOutgoing(v, [&](int g) { angle += m.CornerAngle(g); });
+            ideal[v] = std::max(1, int(std::lround(angle / (M_PI / 2)))) + 1;
+        }
+        return ideal;
+    }
 
     // The input surface's normal under a polygon of nodes, present or planned: at its centroid,
     // the nearest of the walks from every corner's home (one can stop on the wrong side of a tight

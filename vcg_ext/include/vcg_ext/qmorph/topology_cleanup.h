@@ -43,27 +43,6 @@ private:
     static constexpr int kOpenMinValence = 5, kOpenMaxValence = 8;
     static constexpr double kOpenMinGain = 0.5, kOpenFootMin = 0.25, kOpenFootMax = 0.75, kOpenHalfWidth = 0.3;
 
-    // Squared distance of valence `val` at node v from its ideal (4 for nodes made after `ideal`).
-    static double ValenceDeviation(const std::vector<int> &ideal, int v, int val)
-    {
-        const double d = val - (v < int(ideal.size()) ? ideal[v] : 4);
-        return d * d;
-    }
-
-    // Ideal valence per node: 4 inside; on the patch boundary, one more than the number of right
-    // angles that fit in the node's angle.
-    std::vector<int> IdealValences() const
-    {
-        std::vector<int> ideal(m.VertexCount(), 4);
-        for (int v = 0; v < m.VertexCount(); ++v) {
-            if (!m.vertAlive[v] || !m.OnBoundary(v)) continue;
-            double angle = 0;
-            m.ForEachOutgoing(v, [&](int g) { angle += m.CornerAngle(g); });
-            ideal[v] = std::max(1, int(std::lround(angle / (M_PI / 2)))) + 1;
-        }
-        return ideal;
-    }
-
     // Edge turn: an edge shared by two quads is turned to join the other pair of opposite corners
     // of their hexagon when that brings the four nodes' valences closer to their ideal and the two
     // new quads are not worse than 0.3 scaled Jacobian (or than the old ones).
