@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -45,16 +46,17 @@ public:
 private:
     static constexpr int kPasses = 3;
     // A cavity grows at most this many rings of faces around its node, and this many quads.
-    static constexpr int kMaxRings = 3;
-    static constexpr size_t kMaxQuads = 100;
+    static constexpr int kMaxRings = 5;
+    static constexpr size_t kMaxQuads = 250;
     // Concave boundary nodes (three quads of the cavity or more) are filled in at most this often
-    // per ring: the grid's boundary is convex.
+    // per ring: a grid's boundary turns only at its corners.
     static constexpr int kFillPasses = 2;
     // Corner choices tried on the surface, fewest irregular nodes first.
     static constexpr int kCandidates = 6;
     // The valence deviation must drop by more than this.
     static constexpr double kMinGain = 0.5;
-    // Laplacian sweeps over the grid's inner nodes (projected onto the input surface) before it is rated.
+    // Laplacian sweeps over the grid's inner nodes, in their tangent planes, before they are
+    // projected onto the input surface and the grid is rated.
     static constexpr int kGridSmoothing = 10;
     // The grid's mean quality may be at most this much below the cavity's.
     static constexpr double kMeanQualityLoss = 0.02;
@@ -62,9 +64,11 @@ private:
     struct Cavity {
         std::vector<int> faces, loop, inner;  // quads, boundary half-edges (counter-clockwise), inner nodes
         std::vector<int> quadsAt;             // per loop position: the cavity's quads at that node
+        std::vector<double> angleAt;          // ... and the cavity's angle there (radians)
     };
 
     std::vector<int> ideal;
+    std::set<std::vector<int>> tried;  // cavities (sorted faces) that did not fit: faces are never reused
     std::vector<int> faceMark, vertMark;  // stamps
     int stamp = 0;
 
@@ -150,10 +154,13 @@ private:
         // Euler characteristic of a disk of quads: inner nodes - quads + boundary edges / 2 = 1
         if (int(c.inner.size()) - int(c.faces.size()) + int(c.loop.size()) / 2 != 1) return false;
         c.quadsAt.assign(c.loop.size(), 0);
-        for (size_t i = 0; i < c.loop.size(); ++i) {
-            const int x = m.Org(c.loop[i]);
-            m.ForEachOutgoing(x, [&](int g) { c.quadsAt[i] += faceMark[m.heFace[g]] == stamp; });
-        }
+        c.angleAt.assign(c.loop.size(), 0);
+        for (size_t i = 0; i < c.loop.size(); ++i)
+            m.ForEachOutgoing(m.Org(c.loop[i]), [&](int g) {
+                if (faceMark[m.heFace[g]] != stamp) return;
+                ++c.quadsAt[i];
+                c.angleAt[i] += m.CornerAngle(g);
+            });
         return true;
     }
 
@@ -177,7 +184,9 @@ private:
             if (c.faces.size() > kMaxQuads) return false;
             for (int fill = 0; fill <= kFillPasses; ++fill) {
                 if (!Describe(c)) break;
-                if (TryGrid(c)) return true;
+                std::vector<int> key = c.faces;
+                std::sort(key.begin(), key.end());
+                if (tried.insert(key).second && TryGrid(c)) return true;
                 // fill the concave boundary nodes (three quads or more of the cavity at them)
                 std::vector<int> concave;
                 for (size_t i = 0; i < c.loop.size(); ++i)
@@ -196,9 +205,9 @@ private:
 
     // A grid of n x k quads with corners at loop positions c0, c0+n, c0+n+k, c0+2n+k.
     struct Corners {
-        double cost;
+        double cost, misfit;  // valence deviation afterwards; corners' distance from right angles
         int c0, n, k;
-        bool operator<(const Corners &o) const { return cost < o.cost; }
+        bool operator<(const Corners &o) const { return cost < o.cost || (cost == o.cost && misfit < o.misfit); }
     };
 
     bool TryGrid(const Cavity &c)
@@ -218,24 +227,46 @@ private:
             sides += Dev(x, val[i] - c.quadsAt[i] + 2);
             asCorner[i] = Dev(x, val[i] - c.quadsAt[i] + 1) - Dev(x, val[i] - c.quadsAt[i] + 2);
         }
+        // A grid's corner makes a quad corner of the cavity's angle there, a side node two: both
+        // must be able to hold a fair quad (sine above kFairQuad); among grids with as few
+        // irregular nodes, the one whose corners are nearest right angles is tried first.
+        const double minAngle = std::asin(kFairQuad);
+        std::vector<int> notSide;
+        for (int i = 0; i < P; ++i)
+            if (c.angleAt[i] < 2 * minAngle || c.angleAt[i] > 2 * (M_PI - minAngle)) notSide.push_back(i);
+        if (notSide.size() > 4) return false;
         std::vector<Corners> choices;
         for (int c0 = 0; c0 < P; ++c0)
             for (int n = 2; n <= P / 2 - 2; ++n) {
                 const int k = P / 2 - n;
                 if (c0 + 2 * n + k >= P) continue;  // each grid once: c0 is its first corner
-                const double cost = sides + asCorner[c0] + asCorner[(c0 + n) % P] + asCorner[(c0 + n + k) % P] + asCorner[(c0 + 2 * n + k) % P];
-                if (cost < before - kMinGain) choices.push_back({cost, c0, n, k});
+                const int at[4] = {c0, c0 + n, c0 + n + k, c0 + 2 * n + k};
+                double cost = sides, misfit = 0;
+                bool fits = true;
+                for (int x : at) {
+                    cost += asCorner[x];
+                    misfit += std::abs(c.angleAt[x] - M_PI / 2);
+                    fits = fits && c.angleAt[x] > minAngle && c.angleAt[x] < M_PI - minAngle;
+                }
+                for (int x : notSide) fits = fits && std::find(at, at + 4, x) != at + 4;
+                if (fits && cost < before - kMinGain) choices.push_back({cost, misfit, c0, n, k});
             }
         if (choices.empty()) return false;
         std::stable_sort(choices.begin(), choices.end());
         if (choices.size() > size_t(kCandidates)) choices.resize(kCandidates);
+        double worstBefore = 1e9, meanBefore = 0;
+        for (int f : c.faces) {
+            const double q = FaceQualityAt(f, m.InputFaceNormal(f, true));
+            worstBefore = std::min(worstBefore, q);
+            meanBefore += q / c.faces.size();
+        }
         for (const Corners &corners : choices)
-            if (PlaceGrid(c, corners)) return true;
+            if (PlaceGrid(c, corners, worstBefore, meanBefore)) return true;
         return false;
     }
 
     // Lays the grid on the surface, rates it and, when it is fair, puts it in place of the cavity.
-    bool PlaceGrid(const Cavity &c, const Corners &g)
+    bool PlaceGrid(const Cavity &c, const Corners &g, double worstBefore, double meanBefore)
     {
         const int P = int(c.loop.size()), n = g.n, k = g.k;
         // grid node (i, j), 0 <= i <= n, 0 <= j <= k: its loop position on the boundary, else -1
@@ -265,28 +296,27 @@ private:
                 homes[j * W + i] = m.HomeOf(m.Org(c.loop[loopPos(i, 0)]));
                 pos[j * W + i] = proj.Project(pos[j * W + i], homes[j * W + i]);
             }
+        // Laplacian sweeps in each node's tangent plane, then back onto the surface (one projection
+        // per node: the sweeps only even out the spacing)
+        std::vector<P3> normals(pos.size());
+        for (size_t x = 0; x < pos.size(); ++x) normals[x] = proj.Normal(homes[x]);
         for (int sweep = 0; sweep < kGridSmoothing; ++sweep)
             for (int j = 1; j < k; ++j)
                 for (int i = 1; i < n; ++i) {
                     P3 &p = pos[j * W + i];
                     const P3 target = (pos[j * W + i - 1] + pos[j * W + i + 1] + pos[(j - 1) * W + i] + pos[(j + 1) * W + i]) * 0.25;
-                    const P3 normal = proj.Normal(homes[j * W + i]);
                     P3 move = target - p;
-                    move -= normal * (move * normal);
-                    p = proj.Project(p + move, homes[j * W + i]);
+                    move -= normals[j * W + i] * (move * normals[j * W + i]);
+                    p += move;
                 }
+        for (int j = 1; j < k; ++j)
+            for (int i = 1; i < n; ++i) pos[j * W + i] = proj.Project(pos[j * W + i], homes[j * W + i]);
         // the grid must be fair: no quad worse than the worst it replaces or than kFairQuad, and
         // about as good on average
-        double worstBefore = 1e9, meanBefore = 0;
-        for (int f : c.faces) {
-            const double q = FaceQualityAt(f, m.InputFaceNormal(f, true));
-            worstBefore = std::min(worstBefore, q);
-            meanBefore += q;
-        }
-        meanBefore /= c.faces.size();
         double meanAfter = 0;
         const double floor = std::min(kFairQuad, worstBefore);
         std::vector<std::array<P3, 4>> quads;
+        std::vector<std::array<int, 4>> quadHomes;
         for (int j = 0; j < k; ++j)
             for (int i = 0; i < n; ++i) {
                 const int ids[4] = {j * W + i, j * W + i + 1, (j + 1) * W + i + 1, (j + 1) * W + i};
@@ -298,20 +328,29 @@ private:
                     centre += q[t] * 0.25;
                     hs[t] = homes[ids[t]];
                 }
-                P3 normal = m.InputSurfaceNormalAt(centre, hs, 4, true);
+                P3 normal = m.InputSurfaceNormalAt(centre, hs, 4);
                 if (!(normal.SquaredNorm() > 0)) normal = proj.Normal(hs[0]);
                 const double shape = QuadShape(q, normal);
                 if (!(shape > 0) || shape < floor) return false;
                 meanAfter += shape;
                 quads.push_back(q);
+                quadHomes.push_back({hs[0], hs[1], hs[2], hs[3]});
             }
         if (meanAfter / quads.size() < meanBefore - kMeanQualityLoss) return false;
-        // the surface must not flatten: the old inner nodes stay near the grid
-        for (int x : c.inner) {
-            double nearest = 1e300;
-            for (const auto &q : quads)
-                nearest = std::min({nearest, PointTriangleDistance(m.pos[x], q[0], q[1], q[2]), PointTriangleDistance(m.pos[x], q[0], q[2], q[3])});
-            if (nearest > kFlattening * meanLength) return false;
+        // rated on the patch's surface above (cheap); the grid that passes is rated again under
+        // the judge's normal (the true input under a re-meshed patch), as every face is
+        for (size_t q = 0; q < quads.size(); ++q) {
+            const P3 centre = (quads[q][0] + quads[q][1] + quads[q][2] + quads[q][3]) * 0.25;
+            P3 normal = m.InputSurfaceNormalAt(centre, quadHomes[q].data(), 4, true);
+            if (!(normal.SquaredNorm() > 0)) normal = proj.Normal(quadHomes[q][0]);
+            const double shape = QuadShape(quads[q], normal);
+            if (!(shape > 0) || shape < floor) return false;
+        }
+        // the surface must not flatten: every new quad stays near the input surface
+        for (size_t q = 0; q < quads.size(); ++q) {
+            const P3 centre = (quads[q][0] + quads[q][1] + quads[q][2] + quads[q][3]) * 0.25;
+            int from = homes[(q / n) * W + q % n];
+            if ((proj.Project(centre, from) - centre).Norm() > kFlattening * meanLength) return false;
         }
         // in place: new inner nodes, then the grid's quads over loop positions and new nodes
         std::vector<int> added, position(pos.size());

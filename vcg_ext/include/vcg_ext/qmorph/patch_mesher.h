@@ -3,8 +3,9 @@
 //   front advance (front_advance.h)        rows of quads from the front, seams, transitions, templates;
 //   node placement (node_placement.h)      smoothing sweeps before the leftovers are paired;
 //   leftover triangles (leftover_triangles.h)  pairs merged, distant ones brought together, doublets;
-//   topology clean-up (topology_cleanup.h) two rounds of turns, collapses and opens, a smoothing
-//                                          sweep that keeps edges on the surface after each;
+//   topology clean-up (topology_cleanup.h) two rounds of turns, collapses and opens, then cavities
+//   and cavity patterns (cavity_patterns.h) re-meshed as grids, a smoothing sweep that keeps edges
+//                                          on the surface after each;
 //   node placement                         final smoothing sweeps, bad quads' nodes re-placed.
 #ifndef VCG_EXT_QMORPH_PATCH_MESHER_H
 #define VCG_EXT_QMORPH_PATCH_MESHER_H
@@ -44,9 +45,9 @@ public:
             TopologyCleanup cleanup(context);
             for (int round = 0; round < kCleanupRounds; ++round) {  // a smoothing sweep between rounds: better shapes let more operations pass
                 cleanup.Round([&] { leftovers.DissolveDoublets(); });
+                CavityPatterns(context).Run();  // what the local operations leave, then they get another go
                 if (p.smoothing) placement.SmoothAll(true);
             }
-            CavityPatterns(context).Run();
         }
         if (p.smoothing) {
             for (int it = 0; it < p.finalSmoothing; ++it) placement.SmoothAll(true);  // topology is final: keep edges on the surface
