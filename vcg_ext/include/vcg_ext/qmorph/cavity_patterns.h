@@ -1,19 +1,22 @@
-// Structured cavities: irregular nodes removed by re-meshing a disk of quads around them as a
-// regular grid, after the cavity remeshing of Gmsh's quasi-structured pipeline (Reberol, Georgiadis,
-// Remacle 2021, "Quasi-structured quadrilateral meshing in Gmsh"). A disk of quads whose boundary
-// can be cut into four sides, opposite sides with as many edges, is filled by a grid whose inner
-// nodes all have valence 4; the boundary keeps its nodes and edges, and a boundary node's valence
-// changes only where the grid's corners do not match the quads it replaces. So a pair of opposite
-// 3-5 dipoles, which local turns only move around, vanishes once a cavity holds both.
-//
-// A cavity is kept only when the valence deviation of its nodes drops, every new quad is fair on
-// the input surface and the surface is not flattened: element quality holds by construction.
+// Cavity patterns: irregular nodes removed by re-meshing a disk of quads around them from a
+// pattern, after the cavity remeshing of Gmsh's quasi-structured pipeline (Reberol, Georgiadis,
+// Remacle 2021, "Quasi-structured quadrilateral meshing in Gmsh"). The disk's boundary keeps its
+// nodes and edges and is cut into sides at chosen corners:
+//   - four sides, opposite ones with as many edges: a grid, whose inner nodes all have valence 4
+//     (a pair of opposite 3-5 dipoles, which local turns only move around, vanishes);
+//   - three or five sides: a star of grids around one centre of valence 3 or 5 (a cluster of
+//     irregular nodes whose valences do not cancel becomes the one node they add up to).
+// A boundary node's valence changes only where the pattern's corners do not match the quads it
+// replaces. A pattern is kept only when the valence deviation of the cavity's nodes drops, every
+// new quad is fair on the input surface (no worse than the worst it replaces, or than 0.3) and
+// the surface is not flattened: element quality holds by construction.
 #ifndef VCG_EXT_QMORPH_CAVITY_PATTERNS_H
 #define VCG_EXT_QMORPH_CAVITY_PATTERNS_H
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -52,7 +55,10 @@ private:
     // per ring: a grid's boundary turns only at its corners.
     static constexpr int kFillPasses = 2;
     // Corner choices tried on the surface, fewest irregular nodes first.
-    static constexpr int kCandidates = 6;
+    static constexpr int kCandidates = 3;
+    // A star's corners are chosen among this many loop nodes, those where a corner fits best.
+    static constexpr int kStarCornerNodes = 8;
+    static constexpr int kMaxStar = 5;  // corners of the largest star
     // The valence deviation must drop by more than this.
     static constexpr double kMinGain = 0.5;
     // Laplacian sweeps over the grid's inner nodes, in their tangent planes, before they are
@@ -186,7 +192,7 @@ private:
                 if (!Describe(c)) break;
                 std::vector<int> key = c.faces;
                 std::sort(key.begin(), key.end());
-                if (tried.insert(key).second && TryGrid(c)) return true;
+                if (tried.insert(key).second && TryPatterns(c)) return true;
                 // fill the concave boundary nodes (three quads or more of the cavity at them)
                 std::vector<int> concave;
                 for (size_t i = 0; i < c.loop.size(); ++i)
@@ -203,175 +209,297 @@ private:
         return false;
     }
 
-    // A grid of n x k quads with corners at loop positions c0, c0+n, c0+n+k, c0+2n+k.
+    // Where a pattern's corners go on the loop (increasing positions): 4 for a grid, 3 or 5 for a
+    // star; rated by the valence deviation it leaves, then by how far its corners are from the
+    // angle the pattern wants there.
     struct Corners {
-        double cost, misfit;  // valence deviation afterwards; corners' distance from right angles
-        int c0, n, k;
+        double cost, misfit;
+        std::vector<int> at;
         bool operator<(const Corners &o) const { return cost < o.cost || (cost == o.cost && misfit < o.misfit); }
     };
 
-    bool TryGrid(const Cavity &c)
+    // A pattern laid out on the surface: nodes are the loop's positions (as they are) then the new
+    // inner nodes; quads counter-clockwise over them.
+    struct Layout {
+        std::vector<P3> pos;
+        std::vector<int> homes;  // a triangle of the input surface near each node
+        std::vector<std::array<int, 4>> quads;
+    };
+
+    // Picks the patterns that would lower the valence deviation of the cavity's nodes and lays
+    // the best that is fair in place of the cavity.
+    bool TryPatterns(const Cavity &c)
     {
         const int P = int(c.loop.size());
-        if (P % 2 || P < 8) return false;
-        // valence deviation now: the inner nodes and the boundary
+        // valence deviation now: the inner nodes and the boundary; afterwards the boundary's is
+        // `sides` when every loop node is a side node of the pattern (two of its quads there), plus
+        // asCorner[i] for each loop node that is a corner instead (one quad)
         double before = 0, sides = 0;
         std::vector<double> asCorner(P);
-        std::vector<int> val(P);
         for (int v : c.inner) before += Dev(v, m.Valence(v));
         for (int i = 0; i < P; ++i) {
-            const int x = m.Org(c.loop[i]);
-            val[i] = m.Valence(x);
-            before += Dev(x, val[i]);
-            // as a side node the grid has two quads at x, as a corner one
-            sides += Dev(x, val[i] - c.quadsAt[i] + 2);
-            asCorner[i] = Dev(x, val[i] - c.quadsAt[i] + 1) - Dev(x, val[i] - c.quadsAt[i] + 2);
+            const int x = m.Org(c.loop[i]), outside = m.Valence(x) - c.quadsAt[i];
+            before += Dev(x, m.Valence(x));
+            sides += Dev(x, outside + 2);
+            asCorner[i] = Dev(x, outside + 1) - Dev(x, outside + 2);
         }
-        // A grid's corner makes a quad corner of the cavity's angle there, a side node two: both
-        // must be able to hold a fair quad (sine above kFairQuad); among grids with as few
-        // irregular nodes, the one whose corners are nearest right angles is tried first.
+        // A corner makes one quad corner of the cavity's angle there, a side node two: both must
+        // be able to hold a fair quad (sine above kFairQuad).
         const double minAngle = std::asin(kFairQuad);
-        std::vector<int> notSide;
-        for (int i = 0; i < P; ++i)
+        std::vector<int> notSide, cornerable;
+        for (int i = 0; i < P; ++i) {
             if (c.angleAt[i] < 2 * minAngle || c.angleAt[i] > 2 * (M_PI - minAngle)) notSide.push_back(i);
-        if (notSide.size() > 4) return false;
+            if (c.angleAt[i] > minAngle && c.angleAt[i] < M_PI - minAngle) cornerable.push_back(i);
+        }
+        if (notSide.size() > 5) return false;  // no pattern has more corners
         std::vector<Corners> choices;
-        for (int c0 = 0; c0 < P; ++c0)
-            for (int n = 2; n <= P / 2 - 2; ++n) {
-                const int k = P / 2 - n;
-                if (c0 + 2 * n + k >= P) continue;  // each grid once: c0 is its first corner
-                const int at[4] = {c0, c0 + n, c0 + n + k, c0 + 2 * n + k};
-                double cost = sides, misfit = 0;
-                bool fits = true;
-                for (int x : at) {
-                    cost += asCorner[x];
-                    misfit += std::abs(c.angleAt[x] - M_PI / 2);
-                    fits = fits && c.angleAt[x] > minAngle && c.angleAt[x] < M_PI - minAngle;
+        // `at`: `count` loop positions, increasing
+        auto consider = [&](const int *at, int count, double inside) {
+            double cost = sides + inside;
+            for (int i = 0; i < count; ++i) cost += asCorner[at[i]];
+            if (!(cost < before - kMinGain)) return;
+            for (int x : notSide)
+                if (!std::binary_search(at, at + count, x)) return;
+            const double want = M_PI * (count - 2) / count;  // a regular polygon's angle
+            double misfit = 0;
+            for (int i = 0; i < count; ++i) misfit += std::abs(c.angleAt[at[i]] - want);
+            choices.push_back({cost, misfit, std::vector<int>(at, at + count)});
+        };
+        // grids: opposite sides alike (n and k edges, both at least 2: every quad has a new node,
+        // so no new edge joins two loop nodes)
+        if (P % 2 == 0)
+            for (int c0 = 0; c0 < P; ++c0)
+                for (int n = 2; n <= P / 2 - 2; ++n) {
+                    const int k = P / 2 - n;
+                    const int at[4] = {c0, c0 + n, c0 + n + k, c0 + 2 * n + k};
+                    if (at[3] < P) consider(at, 4, 0);
                 }
-                for (int x : notSide) fits = fits && std::find(at, at + 4, x) != at + 4;
-                if (fits && cost < before - kMinGain) choices.push_back({cost, misfit, c0, n, k});
-            }
+        // stars: corners among the loop nodes that fit one best, a centre of valence 3 or 5
+        std::vector<int> best = cornerable;
+        std::stable_sort(best.begin(), best.end(), [&](int x, int y) { return asCorner[x] < asCorner[y]; });
+        if (best.size() > size_t(kStarCornerNodes)) best.resize(kStarCornerNodes);
+        for (int x : notSide)
+            if (std::find(best.begin(), best.end(), x) == best.end()) best.push_back(x);
+        std::sort(best.begin(), best.end());  // picks in increasing order are increasing positions
+        for (int N : {3, 5}) {
+            std::array<int, kMaxStar> pick, parts;
+            std::function<void(int, int)> choose = [&](int from, int count) {
+                if (count == N) {
+                    if (StarSides(pick.data(), N, P, parts.data())) consider(pick.data(), N, ValenceDeviation({}, 0, N));  // the centre, ideally 4
+                    return;
+                }
+                for (int i = from; i < int(best.size()); ++i) {
+                    pick[count] = best[i];
+                    choose(i + 1, count + 1);
+                }
+            };
+            choose(0, 0);
+        }
         if (choices.empty()) return false;
         std::stable_sort(choices.begin(), choices.end());
         if (choices.size() > size_t(kCandidates)) choices.resize(kCandidates);
         double worstBefore = 1e9, meanBefore = 0;
         for (int f : c.faces) {
-            const double q = FaceQualityAt(f, m.InputFaceNormal(f, true));
+            const double q = FaceQualityAt(f, m.InputFaceNormal(f));
             worstBefore = std::min(worstBefore, q);
             meanBefore += q / c.faces.size();
         }
-        for (const Corners &corners : choices)
-            if (PlaceGrid(c, corners, worstBefore, meanBefore)) return true;
+        for (const Corners &corners : choices) {
+            Layout layout = corners.at.size() == 4 ? GridLayout(c, corners.at) : StarLayout(c, corners.at);
+            if (Fair(c, layout, worstBefore, meanBefore)) {
+                Place(c, layout);
+                return true;
+            }
+        }
         return false;
     }
 
-    // Lays the grid on the surface, rates it and, when it is fair, puts it in place of the cavity.
-    bool PlaceGrid(const Cavity &c, const Corners &g, double worstBefore, double meanBefore)
+    // A star of N grids around one centre: side s (from corner s to corner s+1, l[s] edges) is
+    // split after a[s] edges, and a spoke runs from that split to the centre. Grid s sits at
+    // corner s, a[s] by l[s-1] - a[s-1], so the spoke from side s has a[s+1] = l[s-1] - a[s-1]
+    // edges: for odd N that fixes every a[s]. False when there is no such star (parity, or a
+    // part without an edge).
+    static bool StarSides(const int *at, int N, int P, int *a)
     {
-        const int P = int(c.loop.size()), n = g.n, k = g.k;
-        // grid node (i, j), 0 <= i <= n, 0 <= j <= k: its loop position on the boundary, else -1
-        auto loopPos = [&](int i, int j) {
-            if (j == 0) return (g.c0 + i) % P;
-            if (i == n) return (g.c0 + n + j) % P;
-            if (j == k) return (g.c0 + n + k + (n - i)) % P;
-            if (i == 0) return (g.c0 + 2 * n + k + (k - j)) % P;
-            return -1;
-        };
-        auto at = [&](int i, int j) { return m.pos[m.Org(c.loop[loopPos(i, j)])]; };
-        const int W = n + 1;
-        std::vector<P3> pos(W * (k + 1));
-        std::vector<int> homes(pos.size(), -1);
-        for (int j = 0; j <= k; ++j)
-            for (int i = 0; i <= n; ++i) {
-                const int l = loopPos(i, j);
-                if (l >= 0) {
-                    pos[j * W + i] = at(i, j);
-                    homes[j * W + i] = m.HomeOf(m.Org(c.loop[l]));
-                    continue;
-                }
-                // transfinite (Coons) interpolation of the four sides
-                const double u = double(i) / n, w = double(j) / k;
-                pos[j * W + i] = at(i, 0) * (1 - w) + at(i, k) * w + at(0, j) * (1 - u) + at(n, j) * u -
-                                 (at(0, 0) * ((1 - u) * (1 - w)) + at(n, 0) * (u * (1 - w)) + at(0, k) * ((1 - u) * w) + at(n, k) * (u * w));
-                homes[j * W + i] = m.HomeOf(m.Org(c.loop[loopPos(i, 0)]));
-                pos[j * W + i] = proj.Project(pos[j * W + i], homes[j * W + i]);
-            }
-        // Laplacian sweeps in each node's tangent plane, then back onto the surface (one projection
-        // per node: the sweeps only even out the spacing)
-        std::vector<P3> normals(pos.size());
-        for (size_t x = 0; x < pos.size(); ++x) normals[x] = proj.Normal(homes[x]);
-        for (int sweep = 0; sweep < kGridSmoothing; ++sweep)
-            for (int j = 1; j < k; ++j)
-                for (int i = 1; i < n; ++i) {
-                    P3 &p = pos[j * W + i];
-                    const P3 target = (pos[j * W + i - 1] + pos[j * W + i + 1] + pos[(j - 1) * W + i] + pos[(j + 1) * W + i]) * 0.25;
-                    P3 move = target - p;
-                    move -= normals[j * W + i] * (move * normals[j * W + i]);
-                    p += move;
-                }
-        for (int j = 1; j < k; ++j)
-            for (int i = 1; i < n; ++i) pos[j * W + i] = proj.Project(pos[j * W + i], homes[j * W + i]);
-        // the grid must be fair: no quad worse than the worst it replaces or than kFairQuad, and
-        // about as good on average
-        double meanAfter = 0;
-        const double floor = std::min(kFairQuad, worstBefore);
-        std::vector<std::array<P3, 4>> quads;
-        std::vector<std::array<int, 4>> quadHomes;
-        for (int j = 0; j < k; ++j)
-            for (int i = 0; i < n; ++i) {
-                const int ids[4] = {j * W + i, j * W + i + 1, (j + 1) * W + i + 1, (j + 1) * W + i};
-                std::array<P3, 4> q;
-                P3 centre(0, 0, 0);
-                int hs[4];
-                for (int t = 0; t < 4; ++t) {
-                    q[t] = pos[ids[t]];
-                    centre += q[t] * 0.25;
-                    hs[t] = homes[ids[t]];
-                }
-                P3 normal = m.InputSurfaceNormalAt(centre, hs, 4);
-                if (!(normal.SquaredNorm() > 0)) normal = proj.Normal(hs[0]);
-                const double shape = QuadShape(q, normal);
-                if (!(shape > 0) || shape < floor) return false;
-                meanAfter += shape;
-                quads.push_back(q);
-                quadHomes.push_back({hs[0], hs[1], hs[2], hs[3]});
-            }
-        if (meanAfter / quads.size() < meanBefore - kMeanQualityLoss) return false;
-        // rated on the patch's surface above (cheap); the grid that passes is rated again under
-        // the judge's normal (the true input under a re-meshed patch), as every face is
-        for (size_t q = 0; q < quads.size(); ++q) {
-            const P3 centre = (quads[q][0] + quads[q][1] + quads[q][2] + quads[q][3]) * 0.25;
-            P3 normal = m.InputSurfaceNormalAt(centre, quadHomes[q].data(), 4, true);
-            if (!(normal.SquaredNorm() > 0)) normal = proj.Normal(quadHomes[q][0]);
-            const double shape = QuadShape(quads[q], normal);
-            if (!(shape > 0) || shape < floor) return false;
+        int l[kMaxStar];
+        for (int s = 0; s < N; ++s) l[s] = (at[(s + 1) % N] - at[s] + P) % P;
+        int sum = 0;  // walking a[t + 2] = l[t] - a[t] around the star: a[0] = sum - a[0]
+        for (int t = 0, step = 0; step < N; ++step, t = (t + 2) % N) sum = l[t] - sum;
+        if (sum % 2 || sum <= 0) return false;
+        a[0] = sum / 2;
+        for (int t = 0, step = 0; step < N - 1; ++step, t = (t + 2) % N) a[(t + 2) % N] = l[t] - a[t];
+        for (int s = 0; s < N; ++s)
+            if (a[s] < 1 || l[s] - a[s] < 1) return false;
+        return true;
+    }
+
+    Layout StartLayout(const Cavity &c) const
+    {
+        Layout layout;
+        for (int h : c.loop) {
+            layout.pos.push_back(m.pos[m.Org(h)]);
+            layout.homes.push_back(m.HomeOf(m.Org(h)));
         }
-        // the surface must not flatten: every new quad stays near the input surface
-        for (size_t q = 0; q < quads.size(); ++q) {
-            const P3 centre = (quads[q][0] + quads[q][1] + quads[q][2] + quads[q][3]) * 0.25;
-            int from = homes[(q / n) * W + q % n];
+        return layout;
+    }
+
+    // A new node on the surface near p, found from input triangle `from`.
+    int NewNode(Layout &layout, const P3 &p, int from) const
+    {
+        layout.pos.push_back(proj.Project(p, from));
+        layout.homes.push_back(from);
+        return int(layout.pos.size()) - 1;
+    }
+
+    // A grid of quads inside four sides given as node lists: bottom[u] and top[u] for u = 0..a,
+    // left[v] and right[v] for v = 0..b (bottom[0] = left[0], bottom[a] = right[0], and so on);
+    // its inner nodes by transfinite (Coons) interpolation of the sides, onto the surface.
+    void AddGrid(Layout &layout, const std::vector<int> &bottom, const std::vector<int> &right, const std::vector<int> &top,
+                 const std::vector<int> &left) const
+    {
+        const int a = int(bottom.size()) - 1, b = int(left.size()) - 1;
+        std::vector<int> id((a + 1) * (b + 1));
+        auto P = [&](int node) { return layout.pos[node]; };
+        for (int v = 0; v <= b; ++v)
+            for (int u = 0; u <= a; ++u) {
+                int &node = id[v * (a + 1) + u];
+                if (v == 0) node = bottom[u];
+                else if (v == b) node = top[u];
+                else if (u == 0) node = left[v];
+                else if (u == a) node = right[v];
+                else {
+                    const double s = double(u) / a, t = double(v) / b;
+                    const P3 p = P(bottom[u]) * (1 - t) + P(top[u]) * t + P(left[v]) * (1 - s) + P(right[v]) * s -
+                                 (P(bottom[0]) * ((1 - s) * (1 - t)) + P(bottom[a]) * (s * (1 - t)) + P(top[0]) * ((1 - s) * t) + P(top[a]) * (s * t));
+                    node = NewNode(layout, p, layout.homes[bottom[u]]);
+                }
+            }
+        for (int v = 0; v < b; ++v)
+            for (int u = 0; u < a; ++u)
+                layout.quads.push_back({id[v * (a + 1) + u], id[v * (a + 1) + u + 1], id[(v + 1) * (a + 1) + u + 1], id[(v + 1) * (a + 1) + u]});
+    }
+
+    // Nodes of the loop from position `from`, `count` edges forward (count < 0: backward).
+    static std::vector<int> LoopRun(int from, int count, int P)
+    {
+        std::vector<int> run;
+        for (int k = 0; k <= std::abs(count); ++k) run.push_back(((from + (count < 0 ? -k : k)) % P + P) % P);
+        return run;
+    }
+
+    // One grid with corners at[0..3]: n = at[1] - at[0] by k = at[2] - at[1] quads.
+    Layout GridLayout(const Cavity &c, const std::vector<int> &at) const
+    {
+        const int P = int(c.loop.size()), n = at[1] - at[0], k = at[2] - at[1];
+        Layout layout = StartLayout(c);
+        AddGrid(layout, LoopRun(at[0], n, P), LoopRun(at[1], k, P), LoopRun(at[3], -n, P), LoopRun(at[0], -k, P));
+        return layout;
+    }
+
+    // N grids around a centre of valence N (see StarSides).
+    Layout StarLayout(const Cavity &c, const std::vector<int> &at) const
+    {
+        const int P = int(c.loop.size()), N = int(at.size());
+        int a[kMaxStar];
+        StarSides(at.data(), N, P, a);
+        Layout layout = StartLayout(c);
+        // the centre: the loop's mean, onto the surface from the loop node nearest it
+        P3 mean(0, 0, 0);
+        for (const P3 &p : layout.pos) mean += p / double(P);
+        int nearest = 0;
+        for (int i = 1; i < P; ++i)
+            if ((layout.pos[i] - mean).SquaredNorm() < (layout.pos[nearest] - mean).SquaredNorm()) nearest = i;
+        const int centre = NewNode(layout, mean, layout.homes[nearest]);
+        // spoke s: from the split of side s to the centre, a[s + 1] edges
+        std::vector<std::vector<int>> spoke(N);
+        for (int s = 0; s < N; ++s) {
+            const int split = (at[s] + a[s]) % P, length = a[(s + 1) % N];
+            spoke[s].push_back(split);
+            for (int t = 1; t < length; ++t)
+                spoke[s].push_back(NewNode(layout, layout.pos[split] + (layout.pos[centre] - layout.pos[split]) * (double(t) / length), layout.homes[split]));
+            spoke[s].push_back(centre);
+        }
+        // grid s at corner s: along side s to its split, back along side s - 1 to its split
+        for (int s = 0; s < N; ++s) {
+            const int prev = (s + N - 1) % N;
+            AddGrid(layout, LoopRun(at[s], a[s], P), spoke[s], spoke[prev], LoopRun(at[s], -int(spoke[s].size() - 1), P));
+        }
+        return layout;
+    }
+
+    // Evens out the new nodes (Laplacian sweeps in their tangent planes, then onto the surface)
+    // and rates the pattern: no quad worse than the worst it replaces or than kFairQuad, about as
+    // good on average, none farther from the input surface than the flattening allowance.
+    bool Fair(const Cavity &c, Layout &layout, double worstBefore, double meanBefore) const
+    {
+        const int P = int(c.loop.size()), count = int(layout.pos.size());
+        std::vector<P3> normals(count);
+        for (int x = P; x < count; ++x) normals[x] = proj.Normal(layout.homes[x]);
+        for (int sweep = 0; sweep < kGridSmoothing; ++sweep) {
+            std::vector<P3> sum(count, P3(0, 0, 0));
+            std::vector<int> edges(count, 0);
+            for (const auto &q : layout.quads)  // every edge of a new node is in two quads: counted alike
+                for (int t = 0; t < 4; ++t) {
+                    const int x = q[t], y = q[(t + 1) % 4];
+                    sum[x] += layout.pos[y], ++edges[x];
+                    sum[y] += layout.pos[x], ++edges[y];
+                }
+            for (int x = P; x < count; ++x) {
+                P3 move = sum[x] / double(edges[x]) - layout.pos[x];
+                move -= normals[x] * (move * normals[x]);
+                layout.pos[x] += move;
+            }
+        }
+        for (int x = P; x < count; ++x) layout.pos[x] = proj.Project(layout.pos[x], layout.homes[x]);
+        const double floor = std::min(kFairQuad, worstBefore);
+        auto corners = [&](const std::array<int, 4> &q) {
+            return std::array<P3, 4>{layout.pos[q[0]], layout.pos[q[1]], layout.pos[q[2]], layout.pos[q[3]]};
+        };
+        auto shape = [&](const std::array<int, 4> &q, bool exact) {
+            const std::array<P3, 4> pos = corners(q);
+            int homes[4] = {layout.homes[q[0]], layout.homes[q[1]], layout.homes[q[2]], layout.homes[q[3]]};
+            P3 normal = m.InputSurfaceNormalAt((pos[0] + pos[1] + pos[2] + pos[3]) * 0.25, homes, 4, exact);
+            if (!(normal.SquaredNorm() > 0)) normal = proj.Normal(homes[0]);
+            return QuadShape(pos, normal);
+        };
+        // rated on the patch's surface first (cheap), then under the judge's normal (the true
+        // input under a re-meshed patch), as every face is
+        double meanAfter = 0;
+        for (const auto &q : layout.quads) {
+            const double quality = shape(q, false);
+            if (!(quality > 0) || quality < floor) return false;
+            meanAfter += quality / layout.quads.size();
+        }
+        if (meanAfter < meanBefore - kMeanQualityLoss) return false;
+        for (const auto &q : layout.quads) {
+            const double quality = shape(q, true);
+            if (!(quality > 0) || quality < floor) return false;
+        }
+        for (const auto &q : layout.quads) {
+            const std::array<P3, 4> pos = corners(q);
+            const P3 centre = (pos[0] + pos[1] + pos[2] + pos[3]) * 0.25;
+            int from = layout.homes[q[0]];
             if ((proj.Project(centre, from) - centre).Norm() > kFlattening * meanLength) return false;
         }
-        // in place: new inner nodes, then the grid's quads over loop positions and new nodes
-        std::vector<int> added, position(pos.size());
-        for (int j = 0; j <= k; ++j)
-            for (int i = 0; i <= n; ++i) {
-                const int l = loopPos(i, j);
-                if (l >= 0) { position[j * W + i] = l; continue; }
-                position[j * W + i] = P + int(added.size());
-                added.push_back(m.AddVertex(pos[j * W + i]));
-                home.resize(m.VertexCount(), 0);
-                home[added.back()] = homes[j * W + i];
-            }
+        return true;
+    }
+
+    // The pattern in place of the cavity: its new nodes, then its quads.
+    void Place(const Cavity &c, const Layout &layout)
+    {
+        const int P = int(c.loop.size());
+        std::vector<int> added;
+        for (int x = P; x < int(layout.pos.size()); ++x) {
+            added.push_back(m.AddVertex(layout.pos[x]));
+            home.resize(m.VertexCount(), 0);
+            home[added.back()] = layout.homes[x];
+        }
         std::vector<std::vector<int>> polygons;
-        for (int j = 0; j < k; ++j)
-            for (int i = 0; i < n; ++i)
-                polygons.push_back({position[j * W + i], position[j * W + i + 1], position[(j + 1) * W + i + 1], position[(j + 1) * W + i]});
+        for (const auto &q : layout.quads) polygons.push_back({q[0], q[1], q[2], q[3]});
         int level = 0;
         for (int f : c.faces) level = std::max(level, m.faceLevel[f]);
         m.ReplaceRegion(c.loop, c.faces, c.inner, polygons, level, added);
         for (int x : added) SmoothNode(x);
-        return true;
     }
 };
 
