@@ -150,4 +150,63 @@ TEST(CavityPatterns, RefusesGridsThatWouldBeUnfair)
     for (size_t v = 0; v < before.size(); ++v) EXPECT_EQ(g.m.pos[v], before[v]);
 }
 
+// A triangle of side 4 meshed as a star: three 2 x 2 grids of quads around a centre of valence 3,
+// the fewest irregular nodes a three-cornered disk can have. A turned edge adds four; the star
+// comes back.
+TEST(CavityPatterns, ATurnedEdgeInAThreeSidedStarBecomesAStarAgain)
+{
+    const D3 A(0, 0, 0), B(4, 0, 0), C(2, 2 * std::sqrt(3.0), 0), O = (A + B + C) / 3.0;
+    const D3 corner[3] = {A, B, C}, mid[3] = {(A + B) / 2.0, (B + C) / 2.0, (C + A) / 2.0};
+    std::vector<D3> pts;
+    std::vector<std::array<int, 3>> tris;
+    auto node = [&](const D3 &p) {
+        for (size_t i = 0; i < pts.size(); ++i)
+            if ((pts[i] - p).Norm() < 1e-9) return int(i);
+        pts.push_back(p);
+        return int(pts.size()) - 1;
+    };
+    std::vector<std::array<int, 2>> diagonals;
+    for (int s = 0; s < 3; ++s) {  // the grid at corner s: corner, mid of side s, centre, mid of side s - 1
+        const D3 q[4] = {corner[s], mid[s], O, mid[(s + 2) % 3]};
+        auto at = [&](int i, int j) {
+            const double u = i / 2.0, v = j / 2.0;
+            return node(q[0] * ((1 - u) * (1 - v)) + q[1] * (u * (1 - v)) + q[2] * (u * v) + q[3] * ((1 - u) * v));
+        };
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                const int a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+                tris.push_back({a, b, c});
+                tris.push_back({a, c, d});
+                diagonals.push_back({a, c});
+            }
+    }
+    vcg_ext::SurfaceProjector surface;
+    surface.Build(pts, tris);
+    qm::MixedMesh m;
+    m.Build(pts, tris);
+    for (const auto &d : diagonals) m.MergeTriangles(m.FindHalfEdge(d[0], d[1]), 0);
+    auto inner = [&](int valence) {
+        int n = 0;
+        for (int v = 0; v < m.VertexCount(); ++v) n += m.vertAlive[v] && !m.OnBoundary(v) && (valence ? m.Valence(v) == valence : m.Valence(v) != 4);
+        return n;
+    };
+    ASSERT_EQ(inner(0), 1);
+    ASSERT_EQ(inner(3), 1);
+    // turn the edge between two inner nodes of valence 4 in the grid at corner A
+    const int x = node((mid[0] + O) / 2.0), y = node((A + mid[0] + O + mid[2]) / 4.0);
+    ASSERT_TRUE(m.EdgeExists(x, y));
+    const int h = m.FindHalfEdge(x, y), t = m.heTwin[h];
+    m.ReplaceRegion({m.heNext[h], m.heNext[m.heNext[h]], m.hePrev[h], m.heNext[t], m.heNext[m.heNext[t]], m.hePrev[t]},
+                    {m.heFace[h], m.heFace[t]}, {}, {{1, 2, 3, 4}, {4, 5, 0, 1}}, 0);
+    ASSERT_GT(inner(0), 1);
+    std::vector<int> home(m.VertexCount(), 0);
+    const qm::PatchParams params;
+    qm::PatchContext context(m, surface, home, params);
+    qm::CavityPatterns(context).Run();
+    EXPECT_GE(context.stats.cavities, 1);
+    EXPECT_EQ(inner(0), 1) << "one irregular node left";
+    EXPECT_EQ(inner(3), 1) << "... of valence 3";
+    EXPECT_EQ(ExpectConsistentQuadDisk(m), 12);
+}
+
 }  // namespace

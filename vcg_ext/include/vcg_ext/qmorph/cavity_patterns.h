@@ -75,6 +75,14 @@ private:
 
     std::vector<int> ideal;
     std::set<std::vector<int>> tried;  // cavities (sorted faces) that did not fit: faces are never reused
+    std::vector<double> quality;       // per face, once rated (NaN: not yet); no old node moves during a run
+
+    double QualityOf(int f)
+    {
+        if (f >= int(quality.size())) quality.resize(m.FaceCount(), std::nan(""));
+        if (std::isnan(quality[f])) quality[f] = FaceQualityAt(f, m.InputFaceNormal(f));
+        return quality[f];
+    }
     std::vector<int> faceMark, vertMark;  // stamps
     int stamp = 0;
 
@@ -281,26 +289,30 @@ private:
         for (int x : notSide)
             if (std::find(best.begin(), best.end(), x) == best.end()) best.push_back(x);
         std::sort(best.begin(), best.end());  // picks in increasing order are increasing positions
+        double lowest = 0;  // the most a corner can lower the cost: bounds the search
+        for (int x : best) lowest = std::min(lowest, asCorner[x]);
         for (int N : {3, 5}) {
+            const double centre = ValenceDeviation({}, 0, N);  // the centre's: ideally 4
             std::array<int, kMaxStar> pick, parts;
-            std::function<void(int, int)> choose = [&](int from, int count) {
+            std::function<void(int, int, double)> choose = [&](int from, int count, double cost) {
+                if (!(cost + (N - count) * lowest < before - kMinGain)) return;
                 if (count == N) {
-                    if (StarSides(pick.data(), N, P, parts.data())) consider(pick.data(), N, ValenceDeviation({}, 0, N));  // the centre, ideally 4
+                    if (StarSides(pick.data(), N, P, parts.data())) consider(pick.data(), N, centre);
                     return;
                 }
                 for (int i = from; i < int(best.size()); ++i) {
                     pick[count] = best[i];
-                    choose(i + 1, count + 1);
+                    choose(i + 1, count + 1, cost + asCorner[best[i]]);
                 }
             };
-            choose(0, 0);
+            choose(0, 0, sides + centre);
         }
         if (choices.empty()) return false;
         std::stable_sort(choices.begin(), choices.end());
         if (choices.size() > size_t(kCandidates)) choices.resize(kCandidates);
         double worstBefore = 1e9, meanBefore = 0;
         for (int f : c.faces) {
-            const double q = FaceQualityAt(f, m.InputFaceNormal(f));
+            const double q = QualityOf(f);
             worstBefore = std::min(worstBefore, q);
             meanBefore += q / c.faces.size();
         }
@@ -343,7 +355,8 @@ private:
         return layout;
     }
 
-    // A new node on the surface near p, found from input triangle `from`.
+    // A new node on the surface near p, found from input triangle `from` (a node's next to it:
+    // the walk is short).
     int NewNode(Layout &layout, const P3 &p, int from) const
     {
         layout.pos.push_back(proj.Project(p, from));
@@ -371,7 +384,7 @@ private:
                     const double s = double(u) / a, t = double(v) / b;
                     const P3 p = P(bottom[u]) * (1 - t) + P(top[u]) * t + P(left[v]) * (1 - s) + P(right[v]) * s -
                                  (P(bottom[0]) * ((1 - s) * (1 - t)) + P(bottom[a]) * (s * (1 - t)) + P(top[0]) * ((1 - s) * t) + P(top[a]) * (s * t));
-                    node = NewNode(layout, p, layout.homes[bottom[u]]);
+                    node = NewNode(layout, p, layout.homes[id[(v - 1) * (a + 1) + u]]);  // from the row below
                 }
             }
         for (int v = 0; v < b; ++v)
@@ -416,7 +429,8 @@ private:
             const int split = (at[s] + a[s]) % P, length = a[(s + 1) % N];
             spoke[s].push_back(split);
             for (int t = 1; t < length; ++t)
-                spoke[s].push_back(NewNode(layout, layout.pos[split] + (layout.pos[centre] - layout.pos[split]) * (double(t) / length), layout.homes[split]));
+                spoke[s].push_back(NewNode(layout, layout.pos[split] + (layout.pos[centre] - layout.pos[split]) * (double(t) / length),
+                                           layout.homes[spoke[s].back()]));
             spoke[s].push_back(centre);
         }
         // grid s at corner s: along side s to its split, back along side s - 1 to its split
