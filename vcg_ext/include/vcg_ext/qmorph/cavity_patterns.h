@@ -7,9 +7,10 @@
 //   - three or five sides: a star of grids around one centre of valence 3 or 5 (a cluster of
 //     irregular nodes whose valences do not cancel becomes the one node they add up to).
 // A boundary node's valence changes only where the pattern's corners do not match the quads it
-// replaces. A pattern is kept only when the valence deviation of the cavity's nodes drops, every
-// new quad is fair on the input surface (no worse than the worst it replaces, or than 0.3) and
-// the surface is not flattened: element quality holds by construction.
+// replaces. A pattern is kept only when the valence deviation of the cavity's nodes drops (or,
+// around a quad below 0.3 scaled Jacobian, stays while every new quad gets above 0.3), every new
+// quad is fair on the input surface (no worse than the worst it replaces, or than 0.3) and the
+// surface is not flattened: element quality holds by construction.
 #ifndef VCG_EXT_QMORPH_CAVITY_PATTERNS_H
 #define VCG_EXT_QMORPH_CAVITY_PATTERNS_H
 
@@ -40,7 +41,7 @@ public:
             ideal = IdealValences();
             const int count = m.VertexCount();
             for (int v = 0; v < count && m.VertexCount() < vertexCap; ++v)
-                if (IrregularInnerNode(v) && RemeshAround(v)) ++remeshed;
+                if ((IrregularInnerNode(v) || NodeOfPoorQuad(v)) && RemeshAround(v)) ++remeshed;
             stats.cavities += remeshed;
             if (!remeshed) break;
         }
@@ -59,8 +60,9 @@ private:
     // A star's corners are chosen among this many loop nodes, those where a corner fits best.
     static constexpr int kStarCornerNodes = 8;
     static constexpr int kMaxStar = 5;  // corners of the largest star
-    // The valence deviation must drop by more than this.
-    static constexpr double kMinGain = 0.5;
+    // The valence deviation must drop by more than this (around a poor quad: not rise, by more
+    // than rounding).
+    static constexpr double kMinGain = 0.5, kSameDeviation = 1e-9;
     // Laplacian sweeps over the grid's inner nodes, in their tangent planes, before they are
     // projected onto the input surface and the grid is rated.
     static constexpr int kGridSmoothing = 10;
@@ -94,6 +96,19 @@ private:
         bool quads = true;
         m.ForEachOutgoing(v, [&](int g) { quads = quads && m.IsQuad(m.heFace[g]); });
         return quads && m.Valence(v) != 4;
+    }
+
+    // An inner node with only quads around, one of them poor (below kFairQuad): a pattern that
+    // keeps the valences but makes every quad fair is taken too.
+    bool NodeOfPoorQuad(int v)
+    {
+        if (!m.vertAlive[v] || m.vertFixed[v] || m.OnBoundary(v)) return false;
+        bool quads = true, poor = false;
+        m.ForEachOutgoing(v, [&](int g) {
+            quads = quads && m.IsQuad(m.heFace[g]);
+            poor = poor || (quads && QualityOf(m.heFace[g]) < kFairQuad);
+        });
+        return quads && poor;
     }
 
     void NewStamp()
@@ -260,12 +275,21 @@ private:
             if (c.angleAt[i] > minAngle && c.angleAt[i] < M_PI - minAngle) cornerable.push_back(i);
         }
         if (notSide.size() > 5) return false;  // no pattern has more corners
+        double worstBefore = 1e9, meanBefore = 0;
+        for (int f : c.faces) {
+            const double q = QualityOf(f);
+            worstBefore = std::min(worstBefore, q);
+            meanBefore += q / c.faces.size();
+        }
+        // a pattern must lower the valence deviation; around a poor quad, keeping it is enough
+        // when every new quad is fair
+        const double allowed = worstBefore < kFairQuad ? before + kSameDeviation : before - kMinGain;
         std::vector<Corners> choices;
         // `at`: `count` loop positions, increasing
         auto consider = [&](const int *at, int count, double inside) {
             double cost = sides + inside;
             for (int i = 0; i < count; ++i) cost += asCorner[at[i]];
-            if (!(cost < before - kMinGain)) return;
+            if (!(cost < allowed)) return;
             for (int x : notSide)
                 if (!std::binary_search(at, at + count, x)) return;
             const double want = M_PI * (count - 2) / count;  // a regular polygon's angle
@@ -295,7 +319,7 @@ private:
             const double centre = ValenceDeviation({}, 0, N);  // the centre's: ideally 4
             std::array<int, kMaxStar> pick, parts;
             std::function<void(int, int, double)> choose = [&](int from, int count, double cost) {
-                if (!(cost + (N - count) * lowest < before - kMinGain)) return;
+                if (!(cost + (N - count) * lowest < allowed)) return;
                 if (count == N) {
                     if (StarSides(pick.data(), N, P, parts.data())) consider(pick.data(), N, centre);
                     return;
@@ -310,15 +334,10 @@ private:
         if (choices.empty()) return false;
         std::stable_sort(choices.begin(), choices.end());
         if (choices.size() > size_t(kCandidates)) choices.resize(kCandidates);
-        double worstBefore = 1e9, meanBefore = 0;
-        for (int f : c.faces) {
-            const double q = QualityOf(f);
-            worstBefore = std::min(worstBefore, q);
-            meanBefore += q / c.faces.size();
-        }
         for (const Corners &corners : choices) {
             Layout layout = corners.at.size() == 4 ? GridLayout(c, corners.at) : StarLayout(c, corners.at);
-            if (Fair(c, layout, worstBefore, meanBefore)) {
+            const double floor = corners.cost < before - kMinGain ? std::min(kFairQuad, worstBefore) : kFairQuad;
+            if (Fair(c, layout, floor, meanBefore)) {
                 Place(c, layout);
                 return true;
             }
@@ -442,9 +461,9 @@ private:
     }
 
     // Evens out the new nodes (Laplacian sweeps in their tangent planes, then onto the surface)
-    // and rates the pattern: no quad worse than the worst it replaces or than kFairQuad, about as
-    // good on average, none farther from the input surface than the flattening allowance.
-    bool Fair(const Cavity &c, Layout &layout, double worstBefore, double meanBefore) const
+    // and rates the pattern: no quad below `floor`, about as good on average as the quads it
+    // replaces, none farther from the input surface than the flattening allowance.
+    bool Fair(const Cavity &c, Layout &layout, double floor, double meanBefore) const
     {
         const int P = int(c.loop.size()), count = int(layout.pos.size());
         std::vector<P3> normals(count);
@@ -465,7 +484,6 @@ private:
             }
         }
         for (int x = P; x < count; ++x) layout.pos[x] = proj.Project(layout.pos[x], layout.homes[x]);
-        const double floor = std::min(kFairQuad, worstBefore);
         auto corners = [&](const std::array<int, 4> &q) {
             return std::array<P3, 4>{layout.pos[q[0]], layout.pos[q[1]], layout.pos[q[2]], layout.pos[q[3]]};
         };
