@@ -395,10 +395,16 @@ public:
         auto positive = [&](int x, int y, int z) {
             P3 u = pos[y] - pos[x], v = pos[z] - pos[x], w = pos[z] - pos[y];
             double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
-            const int from = HomeOf(x);
-            P3 under = InputSurfaceNormalAt((pos[x] + pos[y] + pos[z]) / 3.0, &from, 1);  // the surface under the new triangle
+            if (!((u ^ v) * n > kMinFlipSine * l2)) return false;  // before the searches below
+            const int from[3] = {HomeOf(x), HomeOf(y), HomeOf(z)};
+            const P3 centroid = (pos[x] + pos[y] + pos[z]) / 3.0;
+            // the input under the new triangle, as the judge has it: under a re-meshed patch the
+            // patch's own surface can lean far from the input (a sliver between nearly collinear
+            // front nodes passed against it and came out upside down on the input)
+            P3 under = InputSurfaceNormalAt(centroid, from, 3, true);
             if (!(under.SquaredNorm() > 0)) under = n;
-            return (u ^ v) * n > kMinFlipSine * l2 && (u ^ v) * under > kMinFlipSine * l2;
+            return (u ^ v) * under > kMinFlipSine * l2 &&
+                   (!facesEveryClosest || facesEveryClosest(centroid, u ^ v));  // nor standing on edge over an input edge
         };
         return positive(c, a, d) && positive(d, b, c);
     }
