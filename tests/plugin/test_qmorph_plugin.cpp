@@ -12,6 +12,7 @@
 #include "plugin_harness.h"
 #include "quad_checks.h"
 #include "test_mesh.h"
+#include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg_ext/mesh_checks.h>
 
 using namespace qmf_test;
@@ -194,8 +195,9 @@ TEST(QMorphPlugin, BadMeshesAndParametersAreRefused)
 }
 
 // Q-Morph's re-meshing in RunWholePipeline: off (the split mesh's own triangles), the default
-// (automatic length), or a factor > 0 times the split mesh's mean edge length.
-constexpr double kInputTriangles = -1, kAutomaticLength = 0;
+// (automatic length), 1% of the bounding-box diagonal, or a factor > 0 times the split mesh's mean
+// edge length.
+constexpr double kInputTriangles = -1, kAutomaticLength = 0, kOnePercentOfTheDiagonal = -2;
 
 // Filters 1-4 with their defaults on a Debian-package mesh, Q-Morph's re-meshing as remeshFactor
 // says. Checks the output contract.
@@ -215,6 +217,10 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAut
     const int selected = CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS);
     RichParameterList par = h.Defaults(kQMorph);
     if (remeshFactor == kInputTriangles) par.setValue("RemeshFirst", BoolValue(false));
+    if (remeshFactor == kOnePercentOfTheDiagonal) {
+        vcg::tri::UpdateBounding<CMeshO>::Box(mm->cm);
+        par.setValue("TargetEdgeLength", AbsPercValue(float(0.01 * mm->cm.bbox.Diag())));
+    }
     if (remeshFactor > 0) {
         double sum = 0;
         for (auto &f : mm->cm.face)
@@ -257,7 +263,7 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAut
     if (remeshFactor == kAutomaticLength) {
         EXPECT_TRUE(r.Logged("Q-Morph re-meshing to edge length")) << all;
         EXPECT_TRUE(r.Logged("(automatic)")) << all;
-    } else if (remeshFactor > 0) {
+    } else if (remeshFactor > 0 || remeshFactor == kOnePercentOfTheDiagonal) {
         EXPECT_TRUE(r.Logged("Q-Morph re-meshing to edge length")) << all;
     } else {
         EXPECT_EQ(CountFaceEdges(mm->cm, &CFaceO::IsFaceEdgeS), selected);
@@ -279,6 +285,16 @@ TEST(QMorphPlugin, WholePipelineOnFandiskAsTriangulated) { RunWholePipeline("fan
 // Coarse re-meshing of the armadillo's thin, hairpin-shaped region fronts: two patches could make the
 // same chord between front nodes (a non-manifold edge) unless such chords are refused.
 TEST(QMorphPlugin, WholePipelineOnArmadilloRemeshedCoarsely) { RunWholePipeline("armadillo", 3.0); }
+
+// Re-meshed at 1% of the diagonal (coarser than the automatic length on this scan): no face flipped,
+// by the log and by the independent check. Before the re-meshing's collapses were held to every
+// input triangle as close as the closest one, a collapse left a triangle standing almost on edge over
+// an input edge (its centroid as close to both triangles of the edge, facing one of them only): the
+// core judged it by one, the independent check by the other.
+TEST(QMorphPlugin, WholePipelineOnArmadilloRemeshedAtOnePercentOfItsDiagonal)
+{
+    RunWholePipeline("armadillo", kOnePercentOfTheDiagonal);
+}
 
 // 'Preserve initial front' off: seams may close onto the front (the front itself stays selected and
 // unchanged, checked inside), so no more triangles are left than with the paper's behaviour. (On

@@ -4,7 +4,8 @@
 // against area / L^2, triangles left, faces flipped against a copy of the input (grid-based closest
 // triangle, quad_checks.h), the front as chains of selected output edges, topology, Hausdorff.
 // Last, the node-move guard of the Q-Morph stages (PatchStage::TryMove / SmoothNode) on a star
-// whose Laplacian target would turn faces over on the input surface.
+// whose Laplacian target would turn faces over on the input surface, and the swap guard
+// (MixedMesh::CanFlip) against the input under a re-meshed patch.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -296,6 +297,42 @@ TEST(FeatureRemesh, NodeMoveThatWouldTurnAFaceOverIsRefused)
     EXPECT_NEAR(m.pos[0][0], -0.2, 1e-12);
     EXPECT_NEAR(m.pos[0][1], 0, 1e-12);
     EXPECT_NEAR(m.pos[0][2], 0, 1e-12) << "projected onto the input surface";
+}
+
+// The flip guard of the front advance (MixedMesh::CanFlip) under a re-meshed patch, where the
+// patch's own surface is not the input (feline_100k re-meshed at 1% of its diagonal: a swap between
+// three nearly collinear front nodes made a sliver that faced the re-meshed surface, walked from a
+// node's home, and was upside down on the input under it). Two triangles (a b c) and (b a d) on the
+// patch's surface, the plane z = 0; a sits just off the chord c-d and 0.05 above the plane, so the
+// swap's triangle (c a d) is a sliver standing up toward +y (normal about (0, 0.93, 0.37)). The
+// input under the patch (the judge) leans toward -y, (0, -0.6, 0.8): the swap must be refused; with
+// the input agreeing with the patch it must not.
+TEST(FeatureRemesh, SwapIsJudgedAgainstTheInputNotTheRemeshedPatch)
+{
+    vcg_ext::SurfaceProjector surface;  // the re-meshed patch's surface: the plane z = 0, normal +z
+    surface.Build({D3(-2, -2, 0), D3(2, -2, 0), D3(2, 2, 0), D3(-2, 2, 0)}, {{{0, 1, 2}}, {{0, 2, 3}}});
+    const D3 a(0, -0.02, 0.05), b(0, 1, 0), c(-1, 0, 0), d(1, 0, 0);
+    MixedMesh m;
+    m.Build({a, b, c, d}, {{{0, 1, 2}}, {{1, 0, 3}}});  // (a b c) and (b a d)
+    m.otherPatches.assign(m.VertexCount(), {});  // no other patch holds these front nodes
+    std::vector<int> home(m.VertexCount(), 0);
+    m.SetInputSurface(&surface, &home);
+    const int ab = 0;  // half-edge a->b of (a b c)
+    ASSERT_EQ(m.Org(ab), 0);
+    ASSERT_EQ(m.Dst(ab), 1);
+    ASSERT_GE(m.heTwin[ab], 0) << "a-b is the interior edge the swap turns into c-d";
+
+    const D3 sliver = (a - c) ^ (d - c);  // the swap's triangle (c a d)
+    ASSERT_GT(sliver * D3(0, 0, 1), 1e-3 * (d - c).SquaredNorm()) << "it faces the patch's surface";
+    const D3 leaning(0, -0.6, 0.8);
+    ASSERT_LT(sliver * leaning, 0) << "and is upside down on the leaning input";
+    for (int f = 0; f < 2; ++f) ASSERT_GT(m.FaceNormal(f) * leaning, 0) << "the triangles before the swap face the input";
+
+    EXPECT_TRUE(m.CanFlip(ab)) << "without a judge the patch's own surface decides: the swap passes";
+    m.judge = [&](const D3 &, double) { return leaning; };
+    EXPECT_FALSE(m.CanFlip(ab)) << "the input under the sliver says it is upside down";
+    m.judge = [](const D3 &, double) { return D3(0, 0, 1); };
+    EXPECT_TRUE(m.CanFlip(ab)) << "not a blanket refusal: with the input agreeing, the swap passes";
 }
 
 // A front over smooth surface is coarsened into chords, each within 0.1 L of the input's curve,

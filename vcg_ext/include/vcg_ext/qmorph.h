@@ -277,6 +277,7 @@ private:
                 mm.facesEveryClosest = [&input, side](const P3 &p, const P3 &direction) {
                     return input.FacesEveryClosest(p, direction * side);
                 };
+                mm.patchIsInput = patchIsInput;
                 mm.SetKeys(in.globalOf);
                 SurfaceProjector surface;
                 surface.Build(in.points, in.tris);

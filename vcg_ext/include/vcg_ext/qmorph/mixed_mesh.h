@@ -71,6 +71,9 @@ public:
     // triangle as close to a point as the judge's (a tie the judge breaks one way, an independent
     // check perhaps the other).
     std::function<bool(const P3 &, const P3 &)> facesEveryClosest;
+    // The patch's own surface is the input (no re-meshing): swaps are rated by walks over it. Off
+    // (a re-meshed patch), the judge rates them (see CanFlip).
+    bool patchIsInput = false;
 
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }
@@ -396,10 +399,18 @@ public:
         auto positive = [&](int x, int y, int z) {
             P3 u = pos[y] - pos[x], v = pos[z] - pos[x], w = pos[z] - pos[y];
             double l2 = std::max({u.SquaredNorm(), v.SquaredNorm(), w.SquaredNorm()});
-            const int from = HomeOf(x);
-            P3 under = InputSurfaceNormalAt((pos[x] + pos[y] + pos[z]) / 3.0, &from, 1);  // the surface under the new triangle
+            if (!((u ^ v) * n > kMinFlipSine * l2)) return false;  // before the searches below
+            // the surface under the new triangle: on the input itself, walked from a corner's home;
+            // under a re-meshed patch the input as the judge has it (the patch's own surface can lean
+            // far from the input: a sliver between nearly collinear front nodes passed against it and
+            // came out upside down on the input), and facing every input triangle as close as the
+            // closest one (not standing on edge over an input edge)
+            const bool judged = !patchIsInput;
+            const int from[3] = {HomeOf(x), HomeOf(y), HomeOf(z)};
+            const P3 centroid = (pos[x] + pos[y] + pos[z]) / 3.0;
+            P3 under = InputSurfaceNormalAt(centroid, from, judged ? 3 : 1, judged);
             if (!(under.SquaredNorm() > 0)) under = n;
-            return (u ^ v) * n > kMinFlipSine * l2 && (u ^ v) * under > kMinFlipSine * l2;
+            return (u ^ v) * under > kMinFlipSine * l2 && (!judged || !facesEveryClosest || facesEveryClosest(centroid, u ^ v));
         };
         return positive(c, a, d) && positive(d, b, c);
     }

@@ -210,7 +210,9 @@ private:
             if (!(after.Norm() > 0) || after * before <= 0) return false;
             const P3 centroid = (X + b + c) / 3.0;
             const P3 n = after / after.Norm();
-            if (surface.NormalUnder(centroid, n) * n <= 0) return false;
+            // facing the input under it, and every input triangle as close (a triangle standing on
+            // edge over an input edge faces one of them only: an independent check may take either)
+            if (surface.NormalUnder(centroid, n) * n <= 0 || !surface.FacesEveryClosest(centroid, n)) return false;
             CoordType onSurface;
             if (!surface.Closest(CoordType::Construct(centroid), onSurface) ||
                 (P3::Construct(onSurface) - centroid).Norm() > kSurfaceDistance * L)
