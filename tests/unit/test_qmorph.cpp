@@ -447,7 +447,9 @@ TEST(QMorph, CleanUpLowersIrregularNodesAndBadQuads)
     EXPECT_GT(all.ops.quadsOpened, 0);
     EXPECT_LT(all.quality.IrregularFraction(), noCleanup.quality.IrregularFraction() - 0.04)
         << "valence turns and diagonal collapses remove irregular nodes: " << Describe(all) << " vs " << Describe(noCleanup);
-    EXPECT_LT(all.quality.quadsBelow03, 0.75 * noRescue.quality.quadsBelow03)
+    EXPECT_GT(all.ops.cavities, 0);
+    // the cavity patterns already re-mesh most quads below 0.3, so fewer are left for the rescue
+    EXPECT_LT(all.quality.quadsBelow03, 0.85 * noRescue.quality.quadsBelow03)
         << "re-placing the nodes of bad quads raises them above 0.3";
     EXPECT_GE(all.quality.minJacobian, noRescue.quality.minJacobian);
 }
