@@ -37,9 +37,10 @@ void QMorphFrontPlugin::initVsaParameters(MeshModel &, RichParameterList &par)
                            "normal by more than this angle gets an extra seed (threshold mode). Smaller: more, flatter "
                            "regions, hence more front curves and smaller patches. The paper: 60 degrees (pi/3)."));
     par.addParam(RichInt("MaxRegions", d.maxRegions, "Max regions",
-                         "Number of regions (count, at least 1). Threshold mode: the most seeding may make (it stops "
-                         "there even if faces still exceed the angle). Fixed mode: exactly this many (fewer only on a "
-                         "mesh with fewer faces)."));
+                         "Number of regions (count). Threshold mode: the most seeding may make (it stops there even "
+                         "if faces still exceed the angle); 0 (the default) is automatic: one region per 100 faces, at "
+                         "least 200, so big scans still meet the angle. Fixed mode: exactly this many (at least 1; "
+                         "fewer only on a mesh with fewer faces)."));
     par.addParam(RichInt("MaxIterations", d.maxIterations, "Max iterations",
                          "Number of Lloyd iterations (flooding + proxy fitting; at least 1) at most after each "
                          "(re)seeding; they stop earlier when the L2,1 error drops by less than 0.01%. More: lower "
@@ -93,5 +94,10 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
         "%d Lloyd iterations in %d seeding rounds, %.3f s",
         r.regions, mm.cm.fn, r.components, r.l21Error, r.maxDeviationDeg, r.lloydIterations, r.seedingRounds,
         r.seconds);
+    if (p.mode == VSA::ThresholdSeeding)
+        Log("VSA: region cap %d (%s)%s", r.regionCap, p.maxRegions > 0 ? "Max regions" : "automatic",
+            r.regions >= r.regionCap && r.maxDeviationDeg > p.thresholdAngleDeg
+                ? ": reached before every face was within the threshold angle; raise Max regions (0: automatic)"
+                : "");
     return true;
 }

@@ -82,7 +82,7 @@ TEST(VsaPlugin, RefusesParametersOutOfRange)
 {
     struct Case { const char *name; int value; bool isFloat; const char *message; };
     const Case cases[] = {{"ThresholdAngle", 0, true, "threshold angle"},   {"ThresholdAngle", 180, true, "threshold angle"},
-                          {"ThresholdAngle", -3, true, "threshold angle"},  {"MaxRegions", 0, false, "max regions"},
+                          {"ThresholdAngle", -3, true, "threshold angle"},  {"MaxRegions", -1, false, "max regions"},
                           {"InitialSeeds", 0, false, "initial seeds"},      {"MaxIterations", 0, false, "max iterations"},
                           {"SeedingMode", 7, false, "seeding mode"}};
     for (const Case &c : cases) {

@@ -12,6 +12,9 @@ typedef vcg::Point3d D3;
 
 namespace {
 
+// Bumps on the unit sphere (AutomaticRegionCap test): radius 1 + h sin(k x) sin(k y) sin(k z).
+constexpr float kBumpHeight = 0.1f, kBumpFrequency = 20.f;
+
 D3 UnitNormal(const TFace &f)
 {
     D3 a = D3::Construct(f.cP(0)), b = D3::Construct(f.cP(1)), c = D3::Construct(f.cP(2));
@@ -244,7 +247,10 @@ TEST(VSA, ParametersOutOfRangeAreRejected)
         EXPECT_NE(VSA::Segment(m, p).error, "") << a;
     }
     VSA::Params p;
-    p.maxRegions = 0;
+    p.maxRegions = -1;
+    EXPECT_NE(VSA::Segment(m, p).error.find("max regions"), std::string::npos);
+    p.maxRegions = 0;  // automatic in threshold mode, but a fixed count needs a number
+    p.mode = VSA::FixedRegionCount;
     EXPECT_NE(VSA::Segment(m, p).error.find("max regions"), std::string::npos);
     p = VSA::Params();
     p.maxIterations = 0;
@@ -318,4 +324,37 @@ TEST(VSA, InputProblemsAreRefusedOrWarnedWithTheirFix)
         EXPECT_EQ(r.error, "");
         EXPECT_EQ(r.warning, "");
     }
+}
+
+// A sphere of 82k faces covered with bumps steep enough that 200 regions (the old fixed cap) leave
+// faces far beyond the threshold angle: the automatic cap (one region per 100 faces) lets the
+// seeding go on until every face is within the angle of its region's normal, as the dialog says.
+TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
+{
+    TMesh bumpy;
+    MakeSphere(bumpy, 6);
+    for (auto &v : bumpy.vert) {
+        const vcg::Point3f p = v.P();
+        v.P() *= 1 + kBumpHeight * std::sin(kBumpFrequency * p[0]) * std::sin(kBumpFrequency * p[1]) * std::sin(kBumpFrequency * p[2]);
+    }
+    vcg::tri::UpdateBounding<TMesh>::Box(bumpy);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(bumpy);
+    TMesh capped;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(capped, bumpy);
+
+    VSA::Params old;
+    old.maxRegions = 200;
+    const VSA::Result r200 = VSA::Segment(capped, old);
+    ASSERT_EQ(r200.error, "");
+    EXPECT_EQ(r200.regions, 200);
+    EXPECT_GT(MaxRegionDeviation(capped, r200.faceRegion, r200.regions), 60.0 + 10) << "the case needs more regions";
+
+    const VSA::Result r = VSA::Segment(bumpy, VSA::Params());
+    ASSERT_EQ(r.error, "");
+    ExpectValidPartition(bumpy, r);
+    EXPECT_EQ(r.regionCap, int(bumpy.fn) / 100);
+    EXPECT_GT(r.regions, 200);
+    EXPECT_LT(r.regions, r.regionCap) << "stopped by the angle, not the cap";
+    EXPECT_LE(r.maxDeviationDeg, 60.0 + 1e-6);
+    EXPECT_LE(MaxRegionDeviation(bumpy, r.faceRegion, r.regions), 60.0 + 1e-6);
 }
