@@ -38,9 +38,9 @@ void QMorphFrontPlugin::initVsaParameters(MeshModel &, RichParameterList &par)
                            "regions, hence more front curves and smaller patches. The paper: 60 degrees (pi/3)."));
     par.addParam(RichInt("MaxRegions", d.maxRegions, "Max regions",
                          "Number of regions (count). Threshold mode: the most seeding may make (it stops there even "
-                         "if faces still exceed the angle); 0 (the default) is automatic: one region per 100 faces, at "
-                         "least 200, so big scans still meet the angle. Fixed mode: exactly this many (at least 1; "
-                         "fewer only on a mesh with fewer faces)."));
+                         "if faces still exceed the angle); 0 is automatic: one region per 100 faces, at least 200, "
+                         "so big scans still meet the angle. Fixed mode: exactly this many (at least 1; fewer only on "
+                         "a mesh with fewer faces)."));
     par.addParam(RichInt("MaxIterations", d.maxIterations, "Max iterations",
                          "Number of Lloyd iterations (flooding + proxy fitting; at least 1) at most after each "
                          "(re)seeding; they stop earlier when the L2,1 error drops by less than 0.01%. More: lower "

@@ -90,9 +90,9 @@ struct TableDef {
 const TableDef &Def(int t)
 {
     static const std::vector<TableDef> defs = {
-        {Fmt("Filter 1 - VSA segmentation (defaults: %s mode, %g deg, %d initial seeds, <= max(%d, faces / %d) "
-             "regions, <= %d Lloyd iterations per round)", VSA::Params().mode == VSA::ThresholdSeeding ? "threshold" : "fixed-count",
-             VSA::Params().thresholdAngleDeg, VSA::Params().initialSeeds, VSA::kMinAutoRegions, VSA::kFacesPerAutoRegion,
+        {Fmt("Filter 1 - VSA segmentation (defaults: %s mode, %g deg, %d initial seeds, <= %d regions, <= %d Lloyd "
+             "iterations per round)", VSA::Params().mode == VSA::ThresholdSeeding ? "threshold" : "fixed-count",
+             VSA::Params().thresholdAngleDeg, VSA::Params().initialSeeds, VSA::Params().maxRegions,
              VSA::Params().maxIterations),
          {"mesh", "faces", "regions", "Lloyd it. (rounds)", "L2,1 error", "max dev. (deg)", "time (ms)", "ms / Lloyd it."},
          "time: wall clock of VSASegmentation::Segment (face-face topology included), best of the repeats; ms / Lloyd "
@@ -220,7 +220,7 @@ struct Options {
     bool ladder = true;            // also the ~1/4 size, for memory linearity
     int bigDegenerate = 0;         // > 0: also the big case with that many needles, and with that many zero-area faces
     std::string bigVsa = "threshold";
-    int bigRegions = 0;            // 0: the default maxRegions (automatic; 200 in fixed mode)
+    int bigRegions = 0;            // 0: the default maxRegions (200)
     bool cgal = true;
     bool cgalBigQuality = false;   // incremental CGAL/fixed-K ours on the big mesh (slow)
     bool bitquad = true;
@@ -258,7 +258,7 @@ void Usage()
         "                      (or armadillo) and fandisk, those found)\n"
         "  --big-faces N       target face count of the big case (default 1000000; midpoint steps x4)\n"
         "  --no-ladder         skip the ~1/4-size run of the big case (memory linearity)\n"
-        "  --big-vsa MODE      threshold (default) or fixed; --big-regions K (default: automatic cap; 200 fixed)\n"
+        "  --big-vsa MODE      threshold (default) or fixed; --big-regions K (default 200)\n"
         "  --big-only          only the big case\n"
         "  --big-degenerate N  also run the full-size big case twice more: with N needle faces (a vertex at 1e-4 of\n"
         "                      its height above the opposite edge: must run) and with N exactly zero-area faces (a vertex\n"

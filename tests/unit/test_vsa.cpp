@@ -326,9 +326,9 @@ TEST(VSA, InputProblemsAreRefusedOrWarnedWithTheirFix)
     }
 }
 
-// A sphere of 82k faces covered with bumps steep enough that 200 regions (the old fixed cap) leave
-// faces far beyond the threshold angle: the automatic cap (one region per 100 faces) lets the
-// seeding go on until every face is within the angle of its region's normal, as the dialog says.
+// A sphere of 82k faces covered with bumps steep enough that 200 regions (the default cap) leave
+// faces far beyond the threshold angle: the automatic cap (Max regions 0: one region per 100
+// faces) lets the seeding go on until every face is within the angle of its region's normal.
 TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
 {
     TMesh bumpy;
@@ -349,7 +349,9 @@ TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
     EXPECT_EQ(r200.regions, 200);
     EXPECT_GT(MaxRegionDeviation(capped, r200.faceRegion, r200.regions), 60.0 + 10) << "the case needs more regions";
 
-    const VSA::Result r = VSA::Segment(bumpy, VSA::Params());
+    VSA::Params automatic;
+    automatic.maxRegions = 0;
+    const VSA::Result r = VSA::Segment(bumpy, automatic);
     ASSERT_EQ(r.error, "");
     ExpectValidPartition(bumpy, r);
     EXPECT_EQ(r.regionCap, int(bumpy.fn) / 100);
