@@ -121,6 +121,19 @@ private:
     // with three; twelve made the same count, 20% slower).
     static constexpr int kMaxSplitPasses = 3;
 
+    // Per vertex: whether it lies on a feature or border edge (such vertices never move). Needs
+    // face-face adjacency.
+    static std::vector<char> FeatureVertices(MeshType &m)
+    {
+        std::vector<char> onFeature(m.vert.size(), 0);
+        for (FaceType &f : m.face)
+            if (!f.IsD())
+                for (int i = 0; i < 3; ++i)
+                    if (IsFeature(f, i) || f.FFp(i) == &f)
+                        onFeature[vcg::tri::Index(m, f.V0(i))] = onFeature[vcg::tri::Index(m, f.V1(i))] = 1;
+        return onFeature;
+    }
+
     // Tangential relaxation (Botsch-Kobbelt): each vertex off the features moves toward the area-
     // weighted centroid of its star, in the tangent plane, then onto the input surface. A move is
     // kept only when no face of the star turns over, against the input surface's normal under the
@@ -129,11 +142,7 @@ private:
     {
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-        std::vector<char> fixed(m.vert.size(), 0);
-        for (FaceType &f : m.face)
-            if (!f.IsD())
-                for (int i = 0; i < 3; ++i)
-                    if (IsFeature(f, i) || f.FFp(i) == &f) fixed[vcg::tri::Index(m, f.V0(i))] = fixed[vcg::tri::Index(m, f.V1(i))] = 1;
+        const std::vector<char> fixed = FeatureVertices(m);
         std::vector<FaceType *> star;
         std::vector<int> corner;
         std::vector<CoordType> normalsBefore;
@@ -178,10 +187,10 @@ private:
     // The last check: the relaxation judges a star against the input under its vertex, and vcglib's
     // flips judge nothing against the input, so on a thin part a face may still stand on edge,
     // facing away from the input triangle closest to its own centroid (armadillo's claw at 3x its
-    // mean edge, after 496 regions: one triangle at 94 degrees). Each such face is mended by the
-    // first of: its free corners moved to their neighbours' centroid on the input, or one of its
-    // non-feature edges flipped, that leaves every face it touches facing the input. Returns the
-    // faces mended. Needs face-face and vertex-face adjacency (kept valid).
+    // mean edge with VSA's automatic region cap: one triangle at 94 degrees). Each such face is
+    // mended by the first of: its free corners moved to their neighbours' centroid on the input,
+    // or one of its non-feature edges flipped, that leaves every face it touches facing the input.
+    // Returns the faces mended. Needs face-face and vertex-face adjacency (kept valid).
     static int TurnBackFlippedFaces(MeshType &m, InputSurface<MeshType> &surface)
     {
         auto facesInput = [&](const P3 &a, const P3 &b, const P3 &c) {
@@ -191,11 +200,7 @@ private:
         auto faces = [&](const FaceType &f) { return facesInput(Pos(f.cV(0)), Pos(f.cV(1)), Pos(f.cV(2))); };
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-        std::vector<char> fixed(m.vert.size(), 0);
-        for (FaceType &f : m.face)
-            if (!f.IsD())
-                for (int i = 0; i < 3; ++i)
-                    if (IsFeature(f, i) || f.FFp(i) == &f) fixed[vcg::tri::Index(m, f.V0(i))] = fixed[vcg::tri::Index(m, f.V1(i))] = 1;
+        const std::vector<char> fixed = FeatureVertices(m);
         int mended = 0;
         std::vector<FaceType *> star;
         std::vector<int> corner;
