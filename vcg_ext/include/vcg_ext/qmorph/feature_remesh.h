@@ -36,6 +36,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/canonical_faces.h>
+#include <vcg_ext/common/edge_flip.h>
 #include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/segment_grid.h>
@@ -226,7 +227,7 @@ private:
                 // f = (v0 v1 a), g across v0-v1 with apex b: the flip makes (v0 b a) and (b v1 a)
                 const P3 v0 = Pos(f.cV0(i)), v1 = Pos(f.cV1(i)), a = Pos(f.cV2(i)), b = Pos(g->cV2(f.cFFi(i)));
                 if (!facesInput(v0, b, a) || !facesInput(b, v1, a)) continue;
-                vcg::face::FlipEdge(f, i);
+                FlipEdgeKeepingFlags(f, i);
                 done = true;
             }
             mended += done;
