@@ -19,13 +19,13 @@ namespace {
 constexpr float kWidth = 0.002f;  // the strip, times the target length L = 1
 
 // Three rows in the z = 0 plane: y = -0.5 (outer), y = 0 (chain A, vertices at x = 0, 0.1, ..,
-// 1), y = kWidth (chain B, staggered: 0, 0.05, 0.15, .., 0.95, 1), y = 0.5 (outer); each band
+// 1), y = width (chain B, staggered: 0, 0.05, 0.15, .., 0.95, 1), y = 0.5 (outer); each band
 // triangulated by merging its two rows by x. The two chains are selected face-edges.
-void MakeStrip(TMesh &m, std::vector<int> &chainA, std::vector<int> &chainB)
+void MakeStrip(TMesh &m, std::vector<int> &chainA, std::vector<int> &chainB, float width = kWidth)
 {
     std::vector<P3> v;
     std::vector<std::vector<int>> rows(4);
-    const float ys[4] = {-0.5f, 0.f, kWidth, 0.5f};
+    const float ys[4] = {-0.5f, 0.f, width, 0.5f};
     for (int r = 0; r < 4; ++r) {
         std::vector<float> xs;
         if (r == 2) {
@@ -56,7 +56,7 @@ void MakeStrip(TMesh &m, std::vector<int> &chainA, std::vector<int> &chainB)
     vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
     vcg::tri::UpdateTopology<TMesh>::VertexFace(m);
     auto onChain = [&](const TVertex *a, const TVertex *b) {
-        return std::abs(a->cP()[1] - b->cP()[1]) < 1e-7f && (std::abs(a->cP()[1]) < 1e-7f || std::abs(a->cP()[1] - kWidth) < 1e-7f);
+        return std::abs(a->cP()[1] - b->cP()[1]) < 1e-7f && (std::abs(a->cP()[1]) < 1e-7f || std::abs(a->cP()[1] - width) < 1e-7f);
     };
     for (TFace &face : m.face)
         for (int k = 0; k < 3; ++k)
@@ -98,7 +98,7 @@ TEST(FacingFeatures, StaggeredChainsAcrossAThinStripFaceEachOther)
     EXPECT_EQ(XsAt(m, 0.5f).size(), 11u);
     EXPECT_EQ(m.fn, facesBefore + 2 * added);
     for (const TFace &f : m.face)
-        if (!f.IsD()) EXPECT_GT(vcg::TriangleNormal(f)[2], 0.f);
+        if (!f.IsD()) { EXPECT_GT(vcg::TriangleNormal(f)[2], 0.f); }
     // the chains are still chains of selected edges, and nothing else is selected
     int selectedOnA = 0, selectedOnB = 0, selectedElsewhere = 0;
     vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
@@ -113,6 +113,31 @@ TEST(FacingFeatures, StaggeredChainsAcrossAThinStripFaceEachOther)
     EXPECT_EQ(selectedOnA, 2 * int(xa.size() - 1));  // both sides of each edge
     EXPECT_EQ(selectedOnB, 2 * int(xb.size() - 1));
     EXPECT_EQ(selectedElsewhere, 0);
+}
+
+TEST(FacingFeatures, AFoldedRingAFewHundredthsOfLWideIsAStripToo)
+{
+    // block's boss meets its plate through a ring 0.02-0.1 of L wide: still a ladder's width
+    constexpr float kRing = 0.03f;
+    TMesh m;
+    std::vector<int> a, b;
+    MakeStrip(m, a, b, kRing);
+    EXPECT_EQ(vcg_ext::qmorph::FacingFeatures<TMesh>::Do(m, 1.0), 19);
+    const std::vector<float> xa = XsAt(m, 0), xb = XsAt(m, kRing);
+    ASSERT_EQ(xa.size(), xb.size());
+    for (size_t i = 0; i < xa.size(); ++i) EXPECT_NEAR(xa[i], xb[i], 1e-6) << "vertex " << i << " of the chains does not face its partner";
+}
+
+TEST(FacingFeatures, StripsOverATenthOfLAreLeftToTheRemesher)
+{
+    // a tenth of L: staggered rims there make quads of fair shape, and matching them would only
+    // put short edges into the fronts of the patches beside
+    TMesh m;
+    std::vector<int> a, b;
+    MakeStrip(m, a, b, 0.1f);
+    const int vertsBefore = m.vn;
+    EXPECT_EQ(vcg_ext::qmorph::FacingFeatures<TMesh>::Do(m, 1.0), 0);
+    EXPECT_EQ(m.vn, vertsBefore);
 }
 
 TEST(FacingFeatures, WideBandsAreLeftAlone)
