@@ -40,6 +40,7 @@
 #include "bench_checks.h"  // vcg's complex.h first: bitquad_creation.h does not include it
 
 #include <vcg/complex/algorithms/bitquad_creation.h>
+#include <wrap/io_trimesh/export_ply.h>
 #include <vcg/complex/append.h>
 #include <vcg_ext/geodesic_straightening.h>
 #include <vcg_ext/mesh_checks.h>
@@ -229,6 +230,7 @@ struct Options {
     bool fork = true;
     bool onlyBig = false;
     std::string out;
+    std::string saveDir;                 // each run's input and quad mesh as PLY ("": none)
     std::string scaling;                 // base mesh of the scaling run ("": none)
     std::vector<int> scalingSteps = {0, 1, 2};
     std::vector<int> scalingThreads = {1, 2};
@@ -269,6 +271,8 @@ void Usage()
         "  --cgal-iterations N Lloyd iterations in the CGAL comparison (default 20)\n"
         "  --no-fork           run everything in this process (a crash stops the benchmark)\n"
         "  --out FILE          also write the markdown report to FILE\n"
+        "  --save-dir DIR      write each run's input (NAME.input.ply: the big case exists only in memory) and\n"
+        "                      quad mesh (NAME.ply, faux and front bits in the face flags) for evalquad\n"
         "  --remesh F          Q-Morph re-meshes first to F x the mean edge length of its input\n"
         "  --remesh-diag P     Q-Morph re-meshes first to P %% of the bounding-box diagonal\n"
         "  --no-cleanup, --no-smoothing  Q-Morph without its topological clean-up / tangent-plane smoothing\n"
@@ -647,6 +651,19 @@ void RunScaling(const Job &job)
                      Count(r.qm.quality.flippedFaces), Fmt("%.2f (%s)", g_gaps.longest, g_gaps.where.c_str())});
 }
 
+// --save-dir: the run's input and output as binary PLY, named after the label's first word
+// (evalquad DIR/NAME.input.ply DIR/NAME.ply judges them).
+void SaveRun(const std::string &dir, const std::string &label, TMesh &input, TMesh &output)
+{
+    std::string name = label.substr(0, label.find(' '));
+    if (label.find("(") != std::string::npos)  // the big case: "armadillo_52k x16 (832k)"
+        name += "_" + label.substr(label.find('(') + 1, label.find(')') - label.find('(') - 1);
+    const int mask = vcg::tri::io::Mask::IOM_FACEFLAGS | vcg::tri::io::Mask::IOM_FACEQUALITY;
+    vcg::tri::io::ExporterPLY<TMesh>::Save(input, (dir + "/" + name + ".input.ply").c_str(), 0, true);
+    vcg::tri::io::ExporterPLY<TMesh>::Save(output, (dir + "/" + name + ".ply").c_str(), mask, true);
+    Progress(label, "saved " + dir + "/" + name + ".ply");
+}
+
 void RunJob(const Job &job, const Options &o)
 {
     if (job.scaling) { RunScaling(job); return; }
@@ -815,6 +832,7 @@ void RunJob(const Job &job, const Options &o)
     barRow.push_back(all ? "pass" : "FAIL");
     Emit(T_BARS, barRow);
 
+    if (!o.saveDir.empty()) SaveRun(o.saveDir, label, input, work);
     if (o.bitquad) CompareWithBitQuad(split, label, !job.big);
     split.Clear();
     work.Clear();
@@ -1018,6 +1036,7 @@ int main(int argc, char **argv)
         else if (a == "--cgal-iterations") o.cgalIterations = std::max(2, std::atoi(next().c_str()));
         else if (a == "--no-fork") o.fork = false;
         else if (a == "--out") o.out = next();
+        else if (a == "--save-dir") o.saveDir = next();
         else if (a == "--remesh") gRemeshFactor = std::atof(next().c_str());
         else if (a == "--remesh-diag") gRemeshDiagPercent = std::atof(next().c_str());
         else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
