@@ -34,6 +34,7 @@
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph/all_quads.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
+#include <vcg_ext/qmorph/flipped_face_mend.h>
 #include <vcg_ext/qmorph/partition.h>
 #include <vcg_ext/qmorph/patch_mesher.h>
 #include <vcg_ext/qmorph/quad_output.h>
@@ -91,6 +92,7 @@ public:
         typename qmorph::FeatureRemesh<MeshType>::Stats remesh;
         int quads = 0, triangles = 0;
         qmorph::PatchStats ops;
+        typename qmorph::FlippedFaceMend<MeshType>::Stats mend;  // the output's last check
         QuadQualityReport quality;
         double seconds = 0;
 
@@ -122,7 +124,8 @@ public:
                           "normal), %d quads below 0.3, %d inverted; flipped faces: %d, folded quads: %d; irregular "
                           "vertices %d of %d (%.1f%%)",
                           q.minJacobian, q.meanJacobian, q.p5Jacobian, q.quadsBelow03, q.invertedQuads, q.flippedFaces,
-                          q.foldedQuads, q.irregularVertices, q.interiorAllQuadVertices, 100 * q.IrregularFraction());
+                          q.foldedQuads, q.irregularVertices, q.interiorAllQuadVertices, 100 * q.IrregularFraction()) +
+                   (mend.mended ? Format("; %d faces found flipped or inverted at the end and turned back", mend.mended) : std::string());
         }
     };
 
@@ -307,8 +310,17 @@ private:
             res.triangles = 0;
         }
         Progress(cb, 99, "Q-Morph: quality report");
-        const PolygonMesh pm = QuadQuality::FromFauxMesh(m);
-        res.quality = QuadQuality::Measure(pm, input.NormalsUnder(pm, out.referenceNormals));
+        auto measure = [&]() {
+            const PolygonMesh pm = QuadQuality::FromFauxMesh(m);
+            return QuadQuality::Measure(pm, input.NormalsUnder(pm, out.referenceNormals));
+        };
+        res.quality = measure();
+        const QuadQualityReport &q = res.quality;
+        if (q.flippedFaces || q.invertedQuads || q.foldedQuads) {  // the last check, only when needed
+            Progress(cb, 99, "Q-Morph: flipped faces");
+            res.mend = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg);
+            if (res.mend.mended) res.quality = measure();
+        }
     }
 
     // The per-patch parameters (angles in radians) from the filter's.

@@ -15,6 +15,7 @@
 #define VCG_EXT_COMMON_INPUT_SURFACE_H
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -143,7 +144,31 @@ public:
         return normals;
     }
 
+    // Whether p lies on a sharp input edge or corner: two of the input triangles closest to p (up
+    // to kOnCreaseDiagonal of the diagonal farther) meet at more than creaseAngleDeg.
+    bool OnCrease(const P3 &p, double creaseAngleDeg)
+    {
+        CoordType closest;
+        const CoordType q = CoordType::Construct(p);
+        if (!Closest(q, closest)) return false;
+        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kOnCreaseDiagonal * mesh.bbox.Diag());
+        std::vector<FaceType *> around;
+        std::vector<ScalarType> distances;
+        std::vector<CoordType> points;
+        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        vcg::tri::EmptyTMark<MeshType> noMarks;
+        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
+        for (size_t i = 0; i < around.size(); ++i)
+            for (size_t j = i + 1; j < around.size(); ++j)
+                if (double(around[i]->cN() * around[j]->cN()) < creaseCos) return true;
+        return false;
+    }
+
 private:
+    // A point of the output on an input crease is there up to float rounding of its coordinates.
+    static constexpr double kOnCreaseDiagonal = 1e-5;
+
     std::vector<char> besideSharpCrease;  // per input triangle
     std::vector<char> reversed;           // per input triangle: read the other way round than the input's
     bool canonical = false;               // see UseCanonicalOrientation

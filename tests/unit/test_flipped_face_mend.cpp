@@ -1,0 +1,92 @@
+// The output's last check (qmorph/flipped_face_mend.h): faces turned over on the input surface are
+// turned back by moving free corners, never a front corner, never leaving a quad concave.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "test_mesh.h"
+#include <vcg/complex/append.h>
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg_ext/qmorph/flipped_face_mend.h>
+
+using namespace qmf_test;
+
+namespace {
+
+typedef vcg_ext::qmorph::FlippedFaceMend<TMesh> Mend;
+
+// Faces of a mesh in the z = 0 plane (counter-clockwise seen from +z) turned over: normal down.
+int FacesTurnedOver(const TMesh &m)
+{
+    int n = 0;
+    for (const TFace &f : m.face)
+        if (!f.IsD() && vcg::TriangleNormal(f)[2] < 0) ++n;
+    return n;
+}
+
+// The vertex at (x, y) of a grid.
+TVertex *At(TMesh &m, float x, float y)
+{
+    for (TVertex &v : m.vert)
+        if (v.P()[0] == x && v.P()[1] == y) return &v;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST(FlippedFaceMend, AVertexDraggedPastItsNeighbourIsPutBack)
+{
+    // the input: a 4 x 4 grid of unit cells; the output: the same with vertex (1, 1) dragged past
+    // (2, 1), so the triangles between turn over
+    TMesh input, m;
+    MakeGrid(input, 4, 4.f);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    At(m, 1, 1)->P() = P3(2.6f, 1.2f, 0);
+    const int turnedOver = FacesTurnedOver(m);
+    ASSERT_GT(turnedOver, 0);
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(FacesTurnedOver(m), 0);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_GE(st.mended, 1);
+    for (const TVertex &v : m.vert) EXPECT_EQ(v.cP()[2], 0.f) << "a vertex left the input plane";
+}
+
+TEST(FlippedFaceMend, FrontCornersStayAndQuadsStayConvex)
+{
+    // quads: each cell of the grid is two triangles sharing a faux diagonal; the row y = 2 is a
+    // front (selected face-edges). Vertex (2, 2) on the front and (2, 3) off it are dragged so that
+    // quads turn over; only (2, 3) may move back.
+    TMesh input, m;
+    MakeGrid(input, 4, 4.f, 0.f, 1, false);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            const P3 a = f.P0(k), b = f.P1(k);
+            if (a[0] != b[0] && a[1] != b[1]) f.SetF(k);                 // the diagonal
+            if (a[1] == 2 && b[1] == 2) f.SetFaceEdgeS(k);              // the front
+        }
+    vcg_ext::InputSurface<TMesh> surface(input);
+    TVertex *onFront = At(m, 2, 2), *free = At(m, 2, 3);
+    const P3 frontPlace(2.4f, 2.f, 0);  // slid along the front: nothing turns over
+    onFront->P() = frontPlace;
+    free->P() = P3(2.3f, 1.7f, 0);      // below the front row: its quads turn over
+    ASSERT_GT(FacesTurnedOver(m), 0);
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(FacesTurnedOver(m), 0);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_EQ(onFront->P(), frontPlace) << "a front corner moved";
+    EXPECT_GT(free->P()[1], 2.f) << "the free corner is still below the front";
+    // every quad convex: each corner turns left seen from +z
+    vcg_ext::QuadQuality::ForEachFauxPolygon(m, [&](TFace &, const std::array<int, 4> &c, int n) {
+        if (n < 4) return;
+        for (int k = 0; k < 4; ++k) {
+            const P3 a = m.vert[c[k]].P(), b = m.vert[c[(k + 1) % 4]].P(), d = m.vert[c[(k + 3) % 4]].P();
+            EXPECT_GT(((b - a) ^ (d - a))[2], 0.f) << "a concave or inverted quad";
+        }
+    });
+}
