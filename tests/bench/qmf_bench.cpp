@@ -659,9 +659,12 @@ void SaveRun(const std::string &dir, const std::string &label, TMesh &input, TMe
     if (label.find("(") != std::string::npos)  // the big case: "armadillo_52k x16 (832k)"
         name += "_" + label.substr(label.find('(') + 1, label.find(')') - label.find('(') - 1);
     const int mask = vcg::tri::io::Mask::IOM_FACEFLAGS | vcg::tri::io::Mask::IOM_FACEQUALITY;
-    vcg::tri::io::ExporterPLY<TMesh>::Save(input, (dir + "/" + name + ".input.ply").c_str(), 0, true);
-    vcg::tri::io::ExporterPLY<TMesh>::Save(output, (dir + "/" + name + ".ply").c_str(), mask, true);
-    Progress(label, "saved " + dir + "/" + name + ".ply");
+    const std::string in = dir + "/" + name + ".input.ply", out = dir + "/" + name + ".ply";
+    if (vcg::tri::io::ExporterPLY<TMesh>::Save(input, in.c_str(), 0, true) != 0 ||
+        vcg::tri::io::ExporterPLY<TMesh>::Save(output, out.c_str(), mask, true) != 0)
+        Note(label, "--save-dir: cannot write " + in + " or " + out);
+    else
+        Progress(label, "saved " + in + " and " + out);
 }
 
 void RunJob(const Job &job, const Options &o)
