@@ -90,3 +90,29 @@ TEST(FlippedFaceMend, FrontCornersStayAndQuadsStayConvex)
         }
     });
 }
+
+TEST(FlippedFaceMend, AFlippedCopyGetsTheSameMoves)
+{
+    // the dragged-vertex case twice, the second time with every face of input and output read
+    // the other way round: the mend must move the same vertices to the same places
+    auto run = [](bool flipped) {
+        TMesh input, m;
+        MakeGrid(input, 4, 4.f, 0.2f, 7);
+        if (flipped)
+            for (TFace &f : input.face) std::swap(f.V(0), f.V(1));
+        vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
+        vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+        vcg_ext::InputSurface<TMesh> surface(input);
+        m.vert[6].P() = m.vert[7].P() + (m.vert[7].P() - m.vert[6].P()) * 0.6f;  // past its neighbour
+        const Mend::Stats st = Mend::Do(m, surface, 60);
+        EXPECT_EQ(st.left, 0);
+        EXPECT_GE(st.mended, 1);
+        std::vector<P3> positions;
+        for (const TVertex &v : m.vert) positions.push_back(v.cP());
+        return positions;
+    };
+    const std::vector<P3> straight = run(false), mirrored = run(true);
+    ASSERT_EQ(straight.size(), mirrored.size());
+    for (size_t i = 0; i < straight.size(); ++i) EXPECT_EQ(straight[i], mirrored[i]) << "vertex " << i;
+}

@@ -67,8 +67,8 @@ public:
             for (int face : badFaces) {
                 if (!bad(face)) { ++mendedNow; continue; }  // a neighbour's move mended it
                 bool done = false;
-                for (int k = 0; k < pg.size[face] && !done; ++k) {
-                    const int v = pg.corners[face][k];
+                for (int v : CornersByIndex(pg, face)) {
+                    if (done) break;
                     if (onFront[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
                     CoordType onSurface;
                     if (!surface.Closest(CoordType::Construct(NeighbourCentroid(pg, v, position)), onSurface)) continue;
@@ -140,21 +140,33 @@ private:
         return c / double(pg.size[face]);
     }
 
+    // Orientation: a consistently flipped mesh gets the same moves. Corners are tried, and
+    // neighbours summed, in vertex index order, not in the order the polygons run.
+    static std::vector<int> CornersByIndex(const Polygons &pg, int face)
+    {
+        std::vector<int> corners(pg.corners[face].begin(), pg.corners[face].begin() + pg.size[face]);
+        std::sort(corners.begin(), corners.end());
+        return corners;
+    }
+
     // The centroid of the vertices sharing a polygon side with v.
     template <class Position>
     static P3 NeighbourCentroid(const Polygons &pg, int v, Position position)
     {
-        P3 sum(0, 0, 0);
-        int n = 0;
+        std::vector<int> neighbours;
         for (int face : pg.facesOf[v]) {
             const int s = pg.size[face];
             for (int k = 0; k < s; ++k)
                 if (pg.corners[face][k] == v) {
-                    sum += position(pg.corners[face][(k + 1) % s]);  // each side once: the one after v
-                    ++n;
+                    neighbours.push_back(pg.corners[face][(k + 1) % s]);
+                    neighbours.push_back(pg.corners[face][(k + s - 1) % s]);
                 }
         }
-        return n ? sum / double(n) : position(v);
+        std::sort(neighbours.begin(), neighbours.end());
+        neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+        P3 sum(0, 0, 0);
+        for (int w : neighbours) sum += position(w);
+        return neighbours.empty() ? position(v) : sum / double(neighbours.size());
     }
 
     // Corners on a front edge (selected face-edge).
