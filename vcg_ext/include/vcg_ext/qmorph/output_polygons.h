@@ -1,0 +1,114 @@
+// The written-back output as polygons for the last passes that move its vertices (the worst-element
+// smoothing, the flipped-face mend): quads and triangles by vertex index, the faces around each
+// vertex, the corners on the front, and the geometry those passes share. Built once; the passes
+// move vertices only, so it stays valid.
+//
+// Orientation: a consistently flipped mesh must get the same moves. Corners are visited, and
+// neighbours summed, in vertex index order, never in the order a polygon runs.
+#ifndef VCG_EXT_QMORPH_OUTPUT_POLYGONS_H
+#define VCG_EXT_QMORPH_OUTPUT_POLYGONS_H
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+
+#include <vcg_ext/common/polygon_geometry.h>
+#include <vcg_ext/quad_quality.h>
+
+namespace vcg_ext {
+namespace qmorph {
+
+struct OutputPolygons {
+    typedef vcg::Point3d P3;
+
+    std::vector<std::array<int, 4>> corners;  // vertex indices, counter-clockwise
+    std::vector<int> size;                    // 3 or 4
+    std::vector<std::vector<int>> facesOf;    // per vertex
+    std::vector<char> onFront;                // per vertex: on a front edge (selected face-edge)
+
+    // m in MeshLab's polygonal form (faux-edge quads), with face-face adjacency.
+    template <class MeshType>
+    static OutputPolygons Gather(MeshType &m)
+    {
+        OutputPolygons pg;
+        pg.facesOf.resize(m.vert.size());
+        QuadQuality::ForEachFauxPolygon(m, [&](typename MeshType::FaceType &, const std::array<int, 4> &c, int n) {
+            for (int k = 0; k < n; ++k) pg.facesOf[c[k]].push_back(int(pg.size.size()));
+            pg.corners.push_back(c);
+            pg.size.push_back(n);
+        });
+        pg.onFront.assign(m.vert.size(), 0);
+        for (const auto &f : m.face)
+            if (!f.IsD())
+                for (int k = 0; k < 3; ++k)
+                    if (f.IsFaceEdgeS(k)) pg.onFront[vcg::tri::Index(m, f.cV0(k))] = pg.onFront[vcg::tri::Index(m, f.cV1(k))] = 1;
+        return pg;
+    }
+
+    int FaceCount() const { return int(size.size()); }
+
+    // The corners of `face` at their positions, counter-clockwise (q[0..size-1]).
+    template <class Position>
+    void Points(int face, Position position, P3 *q) const
+    {
+        for (int k = 0; k < size[face]; ++k) q[k] = position(corners[face][k]);
+    }
+
+    template <class Position>
+    P3 VectorArea(int face, Position position) const
+    {
+        P3 q[4];
+        Points(face, position, q);
+        return vcg_ext::VectorArea(q, size[face]);
+    }
+
+    template <class Position>
+    P3 Centroid(int face, Position position) const
+    {
+        P3 c(0, 0, 0);
+        for (int k = 0; k < size[face]; ++k) c += position(corners[face][k]);
+        return c / double(size[face]);
+    }
+
+    // The corners of `face` in vertex index order.
+    std::vector<int> CornersByIndex(int face) const
+    {
+        std::vector<int> c(corners[face].begin(), corners[face].begin() + size[face]);
+        std::sort(c.begin(), c.end());
+        return c;
+    }
+
+    // The vertices sharing a polygon side with v, in index order.
+    std::vector<int> Neighbours(int v) const
+    {
+        std::vector<int> n;
+        for (int face : facesOf[v]) {
+            const int s = size[face];
+            for (int k = 0; k < s; ++k)
+                if (corners[face][k] == v) {
+                    n.push_back(corners[face][(k + 1) % s]);
+                    n.push_back(corners[face][(k + s - 1) % s]);
+                }
+        }
+        std::sort(n.begin(), n.end());
+        n.erase(std::unique(n.begin(), n.end()), n.end());
+        return n;
+    }
+
+    // The centroid of v's neighbours (v itself when it has none).
+    template <class Position>
+    P3 NeighbourCentroid(int v, Position position) const
+    {
+        const std::vector<int> n = Neighbours(v);
+        P3 sum(0, 0, 0);
+        for (int w : n) sum += position(w);
+        return n.empty() ? position(v) : sum / double(n.size());
+    }
+};
+
+}  // namespace qmorph
+}  // namespace vcg_ext
+
+#endif
