@@ -35,6 +35,7 @@
 #include <vcg_ext/qmorph/all_quads.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/qmorph/flipped_face_mend.h>
+#include <vcg_ext/qmorph/worst_element_smoothing.h>
 #include <vcg_ext/qmorph/partition.h>
 #include <vcg_ext/qmorph/patch_mesher.h>
 #include <vcg_ext/qmorph/quad_output.h>
@@ -57,7 +58,7 @@ public:
                                            // front node (initial front edges are never changed either way)
         bool transitions = true;           // Owen's transition seam and transition split
         bool cleanup = true;               // valence turns and diagonal collapses after the front
-        bool rescueBadQuads = true;        // quads below 0.3 scaled Jacobian: their nodes re-placed
+        bool rescueBadQuads = true;        // quads below 0.3 scaled Jacobian: their nodes re-placed (and the output's worst raised)
         bool smoothing = true;             // tangent-plane smoothing (local, and final sweeps)
         int smoothingIterations = 5;       // final smoothing sweeps, 0..100
         double closedAngleDeg = 135;       // front angle closing an edge end (Owen: 3pi/4)
@@ -92,7 +93,8 @@ public:
         typename qmorph::FeatureRemesh<MeshType>::Stats remesh;
         int quads = 0, triangles = 0;
         qmorph::PatchStats ops;
-        typename qmorph::FlippedFaceMend<MeshType>::Stats mend;  // the output's last check
+        typename qmorph::WorstElementSmoothing<MeshType>::Stats shape;  // the output's final shape pass
+        typename qmorph::FlippedFaceMend<MeshType>::Stats mend;         // the output's last check
         QuadQualityReport quality;
         double seconds = 0;
 
@@ -125,6 +127,9 @@ public:
                           "vertices %d of %d (%.1f%%)",
                           q.minJacobian, q.meanJacobian, q.p5Jacobian, q.quadsBelow03, q.invertedQuads, q.flippedFaces,
                           q.foldedQuads, q.irregularVertices, q.interiorAllQuadVertices, 100 * q.IrregularFraction()) +
+                   (shape.moves ? Format("; worst elements raised: %d corners moved, elements below 0.3 %d -> %d", shape.moves,
+                                         shape.poorBefore, shape.poorAfter)
+                                : std::string()) +
                    (mend.mended ? Format("; %d faces found flipped or inverted at the end and turned back", mend.mended) : std::string());
         }
     };
@@ -308,6 +313,10 @@ private:
             Progress(cb, 99, "Q-Morph: all quads");
             res.quads = qmorph::AllQuads<MeshType>::Split(m, input, par.creaseAngleDeg);
             res.triangles = 0;
+        }
+        if (par.smoothing && par.rescueBadQuads) {  // the rescue of each patch's bad quads, once more on the whole output
+            Progress(cb, 99, "Q-Morph: raising the worst elements");
+            res.shape = qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
         }
         Progress(cb, 99, "Q-Morph: quality report");
         auto measure = [&]() {

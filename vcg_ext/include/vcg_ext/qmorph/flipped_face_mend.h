@@ -3,7 +3,8 @@
 // inverted (a corner turning the other way) or folded, is mended by moving one of its free corners
 // to the centroid of its neighbours, projected onto the input, when that mends it and makes no
 // face around the corner worse: none turned away from an input triangle closest to its centroid,
-// no quad folded or made concave. Corners on the front or on a sharp crease of the input never move.
+// no quad folded or made concave. Corners on the front, on a border or on a sharp crease of the
+// input never move.
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -69,7 +70,7 @@ public:
                 bool done = false;
                 for (int v : pg.CornersByIndex(face)) {  // in index order: the same moves on a flipped copy
                     if (done) break;
-                    if (pg.onFront[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
+                    if (pg.fixed[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
                     CoordType onSurface;
                     if (!surface.Closest(CoordType::Construct(pg.NeighbourCentroid(v, position)), onSurface)) continue;
                     // the face mended, and no face around v made worse: none turned over, no quad

@@ -1,7 +1,7 @@
 // The written-back output as polygons for the last passes that move its vertices (the worst-element
 // smoothing, the flipped-face mend): quads and triangles by vertex index, the faces around each
-// vertex, the corners on the front, and the geometry those passes share. Built once; the passes
-// move vertices only, so it stays valid.
+// vertex, the corners that never move (on the front or a border), and the geometry those passes
+// share. Built once; the passes move vertices only, so it stays valid.
 //
 // Orientation: a consistently flipped mesh must get the same moves. Corners are visited, and
 // neighbours summed, in vertex index order, never in the order a polygon runs.
@@ -26,7 +26,7 @@ struct OutputPolygons {
     std::vector<std::array<int, 4>> corners;  // vertex indices, counter-clockwise
     std::vector<int> size;                    // 3 or 4
     std::vector<std::vector<int>> facesOf;    // per vertex
-    std::vector<char> onFront;                // per vertex: on a front edge (selected face-edge)
+    std::vector<char> fixed;                  // per vertex: on a front edge (selected face-edge) or a border
 
     // m in MeshLab's polygonal form (faux-edge quads), with face-face adjacency.
     template <class MeshType>
@@ -39,11 +39,11 @@ struct OutputPolygons {
             pg.corners.push_back(c);
             pg.size.push_back(n);
         });
-        pg.onFront.assign(m.vert.size(), 0);
+        pg.fixed.assign(m.vert.size(), 0);
         for (const auto &f : m.face)
             if (!f.IsD())
                 for (int k = 0; k < 3; ++k)
-                    if (f.IsFaceEdgeS(k)) pg.onFront[vcg::tri::Index(m, f.cV0(k))] = pg.onFront[vcg::tri::Index(m, f.cV1(k))] = 1;
+                    if (f.IsFaceEdgeS(k) || f.cFFp(k) == &f) pg.fixed[vcg::tri::Index(m, f.cV0(k))] = pg.fixed[vcg::tri::Index(m, f.cV1(k))] = 1;
         return pg;
     }
 
