@@ -309,12 +309,16 @@ private:
         res.triangles = out.triangles;
         Progress(cb, 99, "Q-Morph: writing the quad mesh");
         out.WriteTo(m, part);
+        const bool raiseWorst = par.smoothing && par.rescueBadQuads;  // the rescue of each patch's bad quads, on the whole output
         if (par.allQuads) {
+            // first on the faces the split cuts too (a poor face only has poorer children); the log
+            // counts the pass on the split mesh
+            if (raiseWorst) qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
             Progress(cb, 99, "Q-Morph: all quads");
             res.quads = qmorph::AllQuads<MeshType>::Split(m, input, par.creaseAngleDeg);
             res.triangles = 0;
         }
-        if (par.smoothing && par.rescueBadQuads) {  // the rescue of each patch's bad quads, once more on the whole output
+        if (raiseWorst) {
             Progress(cb, 99, "Q-Morph: raising the worst elements");
             res.shape = qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
         }

@@ -1,5 +1,5 @@
-// The output's final shape pass, after the write-back (and after the all-quads split): a local
-// optimisation that raises the worst elements (the "shape" step of ALGORITHMS.md section 6, in the
+// The output's final shape pass, after the write-back (and before and after the all-quads split):
+// a local optimisation that raises the worst elements (the "shape" step of ALGORITHMS.md section 6, in the
 // spirit of optimisation-based smoothing, Canann et al. 1998, and the untangling passes of Gmsh's
 // quasi-structured pipeline). Each free corner of a poor element is tried at a few places, each
 // projected onto the input surface: its neighbours' centroid, the average of the places that make
