@@ -1,7 +1,7 @@
 // The output's final shape pass, after the write-back (and before and after the all-quads split):
-// a local optimisation that raises the worst elements (the "shape" step of ALGORITHMS.md section 6, in the
-// spirit of optimisation-based smoothing, Canann et al. 1998, and the untangling passes of Gmsh's
-// quasi-structured pipeline). Each free corner of a poor element is tried at a few places, each
+// a local optimisation that raises the worst elements (the "shape" step of ALGORITHMS.md section
+// 6, in the spirit of optimisation-based smoothing, Canann et al. 1998, and the untangling passes
+// of Gmsh's quasi-structured pipeline). Each free corner of a poor element is tried at a few places, each
 // projected onto the input surface: its neighbours' centroid, the average of the places that make
 // each quad around it a parallelogram, half-way to either, and short steps toward and away from
 // each neighbour (a pattern search). The best place is kept only when it raises the worst quality
@@ -88,7 +88,7 @@ public:
                 CoordType best = old;
                 double bestWorst = worstBefore + kMinGain;
                 for (const P3 &target : Targets(pg, v, position)) {
-                    CoordType onSurface;
+                    CoordType onSurface(0, 0, 0);  // set by Closest when it finds a triangle
                     if (!surface.Closest(CoordType::Construct(target), onSurface, (target - position(v)).Norm())) continue;
                     m.vert[v].P() = onSurface;
                     double worst = 1;
