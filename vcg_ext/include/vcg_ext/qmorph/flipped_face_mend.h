@@ -46,10 +46,7 @@ public:
     {
         const OutputPolygons pg = OutputPolygons::Gather(m);
         auto position = [&](int v) { return P3::Construct(m.vert[v].cP()); };
-        auto facesInput = [&](int face) {
-            const P3 a = pg.VectorArea(face, position);
-            return a.Norm() > 0 && surface.FacesEveryClosest(pg.Centroid(face, position), a);
-        };
+        auto facesInput = [&](int face) { return pg.FacesInput(face, position, surface); };
         auto jacobian = [&](int face) {  // of a quad, on its own normal; 1 for a triangle
             if (pg.size[face] < 4) return 1.0;
             P3 q[4];

@@ -72,6 +72,15 @@ struct OutputPolygons {
         return c / double(size[face]);
     }
 
+    // Whether `face` has an area and faces the way of every input triangle closest to its centroid
+    // (InputSurface::FacesEveryClosest): the two passes' test for a face turned over.
+    template <class Position, class Surface>
+    bool FacesInput(int face, Position position, Surface &surface) const
+    {
+        const P3 a = VectorArea(face, position);
+        return a.Norm() > 0 && surface.FacesEveryClosest(Centroid(face, position), a);
+    }
+
     // The corners of `face` in vertex index order.
     std::vector<int> CornersByIndex(int face) const
     {

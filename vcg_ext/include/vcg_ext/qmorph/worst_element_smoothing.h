@@ -51,10 +51,7 @@ public:
             const P3 own = pg.VectorArea(face, position);
             return surface.NormalUnder(pg.Centroid(face, position), own.Norm() > 0 ? own / own.Norm() : own);
         };
-        auto facesInput = [&](int face) {
-            const P3 a = pg.VectorArea(face, position);
-            return a.Norm() > 0 && surface.FacesEveryClosest(pg.Centroid(face, position), a);
-        };
+        auto facesInput = [&](int face) { return pg.FacesInput(face, position, surface); };
         std::vector<signed char> free(m.vert.size(), -1);  // -1: not known yet
         auto isFree = [&](int v) {
             if (free[v] < 0) free[v] = !pg.fixed[v] && !surface.OnCrease(position(v), creaseAngleDeg);
