@@ -45,8 +45,9 @@ rm -rf "$OUT"
 mkdir -p "$RUN/home" "$RUN/render"
 
 # One X server for every meshlabserver and f3d call of the run (xvfb-run per call costs more);
-# Xvfb picks a free display itself (-displayfd).
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$RUN/xvfb.fd" >"$RUN/xvfb.log" 2>&1 </dev/null &
+# Xvfb picks a free display itself (-displayfd); -noreset, or a call made while the server resets
+# after the previous one left fails to connect.
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$RUN/xvfb.fd" >"$RUN/xvfb.log" 2>&1 </dev/null &
 XVFB_PID=$!
 trap 'kill "$XVFB_PID" 2>/dev/null || true' EXIT
 for _ in $(seq 1 100); do [ -s "$RUN/xvfb.fd" ] && break; sleep 0.05; done

@@ -46,7 +46,7 @@ trap cleanup EXIT
 
 # Its own X server: the screenshot shows only this MeshLab, and other tests' windows cannot be
 # mistaken for it. Xvfb picks a free display (-displayfd).
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$WORK/xvfb.fd" >"$WORK/xvfb.log" 2>&1 </dev/null &
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$WORK/xvfb.fd" >"$WORK/xvfb.log" 2>&1 </dev/null &
 XVFB_PID=$!
 while [ ! -s "$WORK/xvfb.fd" ]; do
   kill -0 "$XVFB_PID" 2>/dev/null || fail "Xvfb did not start: $(cat "$WORK/xvfb.log")"

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # CTest fixture: one Xvfb for the whole test run (parallel `xvfb-run -a` calls race for display
 # numbers). `xvfb.sh start DIR` starts it on a free display (Xvfb picks it: -displayfd) and writes
-# DIR/xvfb.display and DIR/xvfb.pid; `xvfb.sh stop DIR` stops it.
+# DIR/xvfb.display and DIR/xvfb.pid; `xvfb.sh stop DIR` stops it. -noreset: by default an X server
+# resets when its last client leaves, and a meshlabserver connecting during that reset fails
+# ("could not connect to display"; seen once with two tests in parallel, in a CI run on 1acd049).
 set -euo pipefail
 cmd="$1"; dir="$2"
 mkdir -p "$dir"
@@ -22,7 +24,7 @@ case "$cmd" in
     stop_server
     rm -f "$dir/xvfb.display" "$dir/xvfb.pid" "$dir/xvfb.fd"
     # setsid: the server outlives this script (CTest waits only for the script)
-    setsid Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$dir/xvfb.fd" >"$dir/xvfb.log" 2>&1 < /dev/null &
+    setsid Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$dir/xvfb.fd" >"$dir/xvfb.log" 2>&1 < /dev/null &
     echo $! > "$dir/xvfb.pid"
     for _ in $(seq 1 100); do
       if [ -s "$dir/xvfb.fd" ]; then echo ":$(tr -d '[:space:]' < "$dir/xvfb.fd")" > "$dir/xvfb.display"; break; fi
