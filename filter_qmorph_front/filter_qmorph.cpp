@@ -47,9 +47,11 @@ void QMorphFrontPlugin::initQMorphParameters(MeshDocument &md, RichParameterList
     par.addParam(RichBool("AllQuads", d.allQuads, "All quads",
                           "On/off. On: no triangle is left; at the end every face is split into quads (a quad "
                           "into four, a triangle into three, new points on the input surface; front and creases "
-                          "cut at their midpoints, the same way on both sides, so they stay chains of edges), and "
-                          "the re-meshing runs at twice the target length so the quads keep its size. Off: the "
-                          "few triangles Q-Morph cannot pair stay."));
+                          "cut at their midpoints, the same way on both sides, so they stay chains of edges). With a "
+                          "target edge length set, the re-meshing runs at twice it so the quads have that length; "
+                          "with the automatic one, at that length, so the quads are half as long (four times as "
+                          "many as without All quads, as well shaped). Off: the few triangles Q-Morph cannot pair "
+                          "stay."));
     par.addParam(RichBool("RemeshFirst", true, "Re-mesh first",
                           "On/off. On (beyond the paper): the mesh is first re-meshed isotropically to triangles of "
                           "the target edge length, so the quads are well shaped whatever the input's triangles (CAD "

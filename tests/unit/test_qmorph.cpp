@@ -410,22 +410,36 @@ TEST(QMorph, AllQuadsSplitsEveryFaceIntoQuads)
     EXPECT_LT(Hausdorff(all, base), 0.005 * base.bbox.Diag());
 }
 
-// All quads at the defaults of the filter (re-meshed first at twice the automatic length) on fandisk.
+// All quads at the defaults of the filter on fandisk: re-meshed first at the automatic length, so
+// the split starts from the defaults' own quad-dominant mesh and halves its edges; with a length
+// given, re-meshed at twice it, so the quads have about that length.
 TEST(QMorph, AllQuadsAfterRemeshingOnFandisk)
 {
-    TMesh m, input;
-    ASSERT_TRUE(LoadWithCreaseFront(m, input, "fandisk"));
-    QM::Params p;
-    p.remeshFirst = true;
-    p.allQuads = true;
-    const double L = QM::AutomaticEdgeLength(m);
-    const QM::Result r = RunAndCheckInvariants(m, p);
-    EXPECT_NEAR(r.targetEdgeLength, 2 * L, 1e-9 * L);
-    EXPECT_EQ(r.quality.triangles, 0);
-    EXPECT_NEAR(MeanSideLength(m), L, 0.25 * L) << "the quads keep the target size";
-    EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
-    EXPECT_LT(r.quality.IrregularFraction(), 0.10) << Describe(r);
-    EXPECT_LT(Hausdorff(m, input), 0.005 * input.bbox.Diag());
+    TMesh base, input;
+    ASSERT_TRUE(LoadWithCreaseFront(base, input, "fandisk"));
+    const double L = QM::AutomaticEdgeLength(base);
+    for (const double given : {0.0, 1.5 * L}) {
+        SCOPED_TRACE(given > 0 ? "length given" : "automatic length");
+        TMesh dominant, all;
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(dominant, base);
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(all, base);
+        QM::Params p;
+        p.remeshFirst = true;
+        p.targetEdgeLength = given > 0 ? 2 * given : 0;
+        const QM::Result before = RunAndCheckInvariants(dominant, p);
+        p.allQuads = true;
+        p.targetEdgeLength = given;
+        const QM::Result r = RunAndCheckInvariants(all, p);
+        EXPECT_NEAR(r.targetEdgeLength, given > 0 ? 2 * given : L, 1e-9 * L);
+        EXPECT_NEAR(r.targetEdgeLength, before.targetEdgeLength, 1e-9 * L);
+        EXPECT_EQ(r.quality.triangles, 0);
+        EXPECT_EQ(r.quads, 4 * before.quads + 3 * before.triangles) << "the same quad-dominant mesh, split";
+        EXPECT_NEAR(MeanSideLength(all), MeanSideLength(dominant) / 2, 0.1 * MeanSideLength(dominant));
+        EXPECT_GT(r.quality.meanJacobian, 0.9) << Describe(r);
+        EXPECT_LT(r.quality.IrregularFraction(), 0.10) << Describe(r);
+        EXPECT_EQ(r.quality.flippedFaces, 0) << Describe(r);
+        EXPECT_LT(Hausdorff(all, input), 0.005 * input.bbox.Diag());
+    }
 }
 
 TEST(QMorph, CleanUpLowersIrregularNodesAndBadQuads)
