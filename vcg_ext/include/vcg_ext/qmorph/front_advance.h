@@ -399,7 +399,7 @@ private:
             return false;
         // the faces that stay around both nodes must stay valid with the joined node at `at`
         const std::vector<int> faces = m.FacesAround({keep, gone}, {m.heFace[h0], m.heFace[m.heTwin[h0]]});
-        bool valid = WorstQualityIfMoved({keep, gone}, at, faces).second > kSeamMinQuality;
+        bool valid = WorstQualityIfMoved({keep, gone}, at, faces) > kSeamMinQuality;
         if (m.vertFixed[keep])  // gone's edges move to keep: none may become a new chord between front nodes
             m.ForEachOutgoing(gone, [&](int g) { if (m.Dst(g) != keep && m.NewChordBetweenFrontNodes(keep, m.Dst(g))) valid = false; });
         if (!valid || !m.CollapseEdge(h0, at, !p.preserveInitialFront)) return false;

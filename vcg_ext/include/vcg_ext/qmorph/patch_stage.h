@@ -225,19 +225,26 @@ protected:
         return QuadShape(m.Org(g), m.Org(m.heNext[g]), m.Org(m.heNext[m.heNext[g]]), m.Org(m.hePrev[g]));
     }
 
-    // Worst FaceQualityAt over `faces` now and with the `moved` nodes all at `at`; each face is
-    // rated against the input surface's normal under it, before and after. Positions are restored.
-    std::pair<double, double> WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces)
+    // Worst FaceQualityAt over `faces`, each rated against the input surface's normal under it (a
+    // closest-point query per face: callers ask for it only when the answer can matter).
+    double WorstQuality(const std::vector<int> &faces) const
     {
-        double before = 1e9, after = 1e9;
-        for (int f : faces) before = std::min(before, FaceQualityAt(f, m.InputFaceNormal(f, true)));
+        double worst = 1e9;
+        for (int f : faces) worst = std::min(worst, FaceQualityAt(f, m.InputFaceNormal(f, true)));
+        return worst;
+    }
+
+    // WorstQuality with the `moved` nodes all at `at` (the surface under the new place); positions
+    // are restored.
+    double WorstQualityIfMoved(std::initializer_list<int> moved, const P3 &at, const std::vector<int> &faces)
+    {
         std::vector<P3> old;
         for (int v : moved) old.push_back(m.pos[v]);
         for (int v : moved) m.pos[v] = at;
-        for (int f : faces) after = std::min(after, FaceQualityAt(f, m.InputFaceNormal(f, true)));  // the surface under the new place
+        const double worst = WorstQuality(faces);
         size_t k = 0;
         for (int v : moved) m.pos[v] = old[k++];
-        return {before, after};
+        return worst;
     }
 
     // Moves node v to the input surface's point nearest `to` when no face around it folds (quality
@@ -249,8 +256,10 @@ protected:
         const P3 at = proj.Project(to, hm);
         const int old = home[v];
         home[v] = hm;  // the faces are rated against the surface under the new place
-        const std::pair<double, double> worst = WorstQualityIfMoved({v}, at, m.FacesAround({v}));
-        if (worst.second > kMinMoveQuality && worst.second >= std::min(worst.first, kFairMoveQuality)) {
+        const std::vector<int> faces = m.FacesAround({v});
+        const double after = WorstQualityIfMoved({v}, at, faces);
+        // the quality now matters only when the move leaves a face below kFairMoveQuality
+        if (after > kMinMoveQuality && (after >= kFairMoveQuality || after >= WorstQuality(faces))) {
             m.pos[v] = at;
             return true;
         }

@@ -133,8 +133,7 @@ private:
         const P3 at = proj.Project((m.pos[a] + m.pos[c]) * 0.5, hm);
         // the faces around a and c but f, with a and c at `at`
         const std::vector<int> faces = m.FacesAround({a, c}, {f});
-        const std::pair<double, double> worst =
-            WorstQualityIfMoved({a, c}, at, faces);
+        const double after = WorstQualityIfMoved({a, c}, at, faces);
         // the surface must not flatten: the old nodes stay near the new faces (as in quad formation)
         const P3 oldA = m.pos[a], oldC = m.pos[c];
         m.pos[a] = m.pos[c] = at;
@@ -151,7 +150,8 @@ private:
         }
         m.pos[a] = oldA;
         m.pos[c] = oldC;
-        if (worst.second < std::min(kFairQuad, worst.first) || worst.second <= kMinCollapseQuality || farthest > kFlattening * meanLength)
+        // the quality now matters only when the collapse leaves a face below kFairQuad
+        if (after <= kMinCollapseQuality || farthest > kFlattening * meanLength || (after < kFairQuad && after < WorstQuality(faces)))
             return false;
         const int level = m.faceLevel[f];
         m.ReplaceRegion(loop, {f}, {}, {{i, i + 1, i + 2}, {i, i + 2, (i + 3) % 4}}, level);
