@@ -97,7 +97,10 @@ public:
             for (int pass = 0; pass < kMaxSplitPasses && Pass(m, surface.mesh, p, st, true, false) > 0; ++pass) {}
             st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, isFrontEdge, toFeatures);
             Pass(m, surface.mesh, p, st, false, true);  // flip toward valence 6
-            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface);
+            vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+            vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+            const std::vector<char> fixed = FeatureVertices(m);
+            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed);
         }
         st.facingSplits = FacingFeatures<MeshType>::Do(m, L);
         st.turnedBack = TurnBackFlippedFaces(m, surface);
@@ -138,12 +141,10 @@ private:
     // Tangential relaxation (Botsch-Kobbelt): each vertex off the features moves toward the area-
     // weighted centroid of its star, in the tangent plane, then onto the input surface. A move is
     // kept only when no face of the star turns over, against the input surface's normal under the
-    // new place or against its own normal before, and the star's worst triangle stays fair.
-    static void Relax(MeshType &m, InputSurface<MeshType> &surface)
+    // new place or against its own normal before, and the star's worst triangle stays fair. Needs
+    // vertex-face adjacency; `fixed`: FeatureVertices (both unchanged by it: it only moves vertices).
+    static void Relax(MeshType &m, InputSurface<MeshType> &surface, const std::vector<char> &fixed)
     {
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
-        vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-        const std::vector<char> fixed = FeatureVertices(m);
         std::vector<FaceType *> star;
         std::vector<int> corner;
         std::vector<CoordType> normalsBefore;

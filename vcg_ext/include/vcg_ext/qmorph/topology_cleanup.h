@@ -66,19 +66,24 @@ private:
                 int val[6];
                 for (int k = 0; k < 6; ++k) val[k] = m.Valence(v[k]);
                 const int a = 3, b = 0;  // positions of the current diagonal's ends
-                double oldQ = std::min(FaceQualityAt(m.heFace[h], m.InputFaceNormal(m.heFace[h])),
-                                       FaceQualityAt(m.heFace[t], m.InputFaceNormal(m.heFace[t])));
+                // the shapes (closest-point queries each) are measured only for a turn that gains
+                auto oldQuality = [&]() {
+                    return std::min(FaceQualityAt(m.heFace[h], m.InputFaceNormal(m.heFace[h])),
+                                    FaceQualityAt(m.heFace[t], m.InputFaceNormal(m.heFace[t])));
+                };
                 double oldDev = dev(v[a], val[a]) + dev(v[b], val[b]);
                 int bestI = -1;
-                double bestGain = 1e-9, bestQ = 0;
+                double bestGain = 1e-9;
                 for (int i : {1, 2}) {  // new diagonal between positions i and i+3
                     int j = i + 3;
                     if (m.EdgeExists(v[i], v[j]) || m.NewChordBetweenFrontNodes(v[i], v[j])) continue;
                     double before = oldDev + dev(v[i], val[i]) + dev(v[j], val[j]);
                     double after = dev(v[a], val[a] - 1) + dev(v[b], val[b] - 1) + dev(v[i], val[i] + 1) + dev(v[j], val[j] + 1);
+                    if (!(before - after > bestGain)) continue;
                     double q = std::min(QuadShape(v[i], v[i + 1], v[i + 2], v[j]), QuadShape(v[j], v[(j + 1) % 6], v[(j + 2) % 6], v[i]));
-                    if (q <= 0 || q < std::min(kFairQuad, oldQ)) continue;  // never invalid, even where it was
-                    if (before - after > bestGain) { bestGain = before - after; bestI = i; bestQ = q; }
+                    if (q <= 0 || (q < kFairQuad && q < oldQuality())) continue;  // never invalid, even where it was
+                    bestGain = before - after;
+                    bestI = i;
                 }
                 if (bestI < 0) continue;
                 const int i = bestI, j = i + 3;
@@ -88,7 +93,6 @@ private:
                     continue;
                 int level = std::max(m.faceLevel[m.heFace[h]], m.faceLevel[m.heFace[t]]);
                 m.ReplaceRegion(loop, {m.heFace[h], m.heFace[t]}, {}, {{i, i + 1, i + 2, j}, {j, (j + 1) % 6, (j + 2) % 6, i}}, level);
-                (void)bestQ;
                 ++turned;
             }
             stats.valenceTurns += turned;
