@@ -127,9 +127,9 @@ public:
 
 private:
     struct Neighbour {
-        VertexType *v;
-        bool feature;
-        P3 normal[2];   // the unit normals of the (at most two) star faces on edge p-v
+        VertexType *v = nullptr;
+        bool feature = false;
+        P3 normal[2] = {P3(0, 0, 0), P3(0, 0, 0)};  // the unit normals of the (at most two) star faces on edge p-v
         int faces = 0;
         bool Sharp() const { return faces == 2 && normal[0] * normal[1] < std::cos(kSharpChainDeg * M_PI / 180); }
     };
