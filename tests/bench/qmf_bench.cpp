@@ -221,7 +221,7 @@ struct Options {
     bool ladder = true;            // also the ~1/4 size, for memory linearity
     int bigDegenerate = 0;         // > 0: also the big case with that many needles, and with that many zero-area faces
     std::string bigVsa = "threshold";
-    int bigRegions = 0;            // 0: the default maxRegions (200)
+    int bigRegions = 0;            // 0: the default (threshold mode: the automatic cap; fixed mode: 200 regions)
     bool cgal = true;
     bool cgalBigQuality = false;   // incremental CGAL/fixed-K ours on the big mesh (slow)
     bool bitquad = true;
@@ -260,7 +260,7 @@ void Usage()
         "                      (or armadillo) and fandisk, those found)\n"
         "  --big-faces N       target face count of the big case (default 1000000; midpoint steps x4)\n"
         "  --no-ladder         skip the ~1/4-size run of the big case (memory linearity)\n"
-        "  --big-vsa MODE      threshold (default) or fixed; --big-regions K (default 200)\n"
+        "  --big-vsa MODE      threshold (default) or fixed; --big-regions K (default: the automatic cap; fixed: 200)\n"
         "  --big-only          only the big case\n"
         "  --big-degenerate N  also run the full-size big case twice more: with N needle faces (a vertex at 1e-4 of\n"
         "                      its height above the opposite edge: must run) and with N exactly zero-area faces (a vertex\n"

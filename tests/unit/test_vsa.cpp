@@ -326,9 +326,11 @@ TEST(VSA, InputProblemsAreRefusedOrWarnedWithTheirFix)
     }
 }
 
-// A sphere of 82k faces covered with bumps steep enough that 200 regions (the default cap) leave
-// faces far beyond the threshold angle: the automatic cap (Max regions 0: one region per 100
-// faces) lets the seeding go on until every face is within the angle of its region's normal.
+// A sphere of 82k faces covered with bumps steep enough that 200 regions (the old default cap)
+// leave faces far beyond the threshold angle: the automatic cap (Max regions 0, the default: one
+// region per 100 faces) lets the seeding go on until every face is within the angle of its
+// region's normal. The tail of that seeding relaxes only the split regions and their neighbours:
+// every region must still be one edge-connected piece whose proxy is its faces' mean normal.
 TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
 {
     TMesh bumpy;
@@ -349,9 +351,9 @@ TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
     EXPECT_EQ(r200.regions, 200);
     EXPECT_GT(MaxRegionDeviation(capped, r200.faceRegion, r200.regions), 60.0 + 10) << "the case needs more regions";
 
-    VSA::Params automatic;
-    automatic.maxRegions = 0;
-    const VSA::Result r = VSA::Segment(bumpy, automatic);
+    const VSA::Params defaults;
+    ASSERT_EQ(defaults.maxRegions, 0) << "the automatic cap is the default";
+    const VSA::Result r = VSA::Segment(bumpy, defaults);
     ASSERT_EQ(r.error, "");
     ExpectValidPartition(bumpy, r);
     EXPECT_EQ(r.regionCap, int(bumpy.fn) / 100);
@@ -359,4 +361,11 @@ TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
     EXPECT_LT(r.regions, r.regionCap) << "stopped by the angle, not the cap";
     EXPECT_LE(r.maxDeviationDeg, 60.0 + 1e-6);
     EXPECT_LE(MaxRegionDeviation(bumpy, r.faceRegion, r.regions), 60.0 + 1e-6);
+    std::vector<D3> sum(r.regions, D3(0, 0, 0));
+    for (auto &f : bumpy.face) {
+        const D3 a = D3::Construct(f.cP(0)), b = D3::Construct(f.cP(1)), c = D3::Construct(f.cP(2));
+        sum[r.faceRegion[vcg::tri::Index(bumpy, f)]] += (b - a) ^ (c - a);
+    }
+    for (int id = 0; id < r.regions; ++id)
+        EXPECT_GT(r.proxyNormal[id] * (sum[id] / sum[id].Norm()), 1 - 1e-9) << "region " << id << "'s proxy is stale";
 }
