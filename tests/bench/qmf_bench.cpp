@@ -91,9 +91,11 @@ struct TableDef {
 const TableDef &Def(int t)
 {
     static const std::vector<TableDef> defs = {
-        {Fmt("Filter 1 - VSA segmentation (defaults: %s mode, %g deg, %d initial seeds, <= %d regions, <= %d Lloyd "
+        {Fmt("Filter 1 - VSA segmentation (defaults: %s mode, %g deg, %d initial seeds, %s, <= %d Lloyd "
              "iterations per round)", VSA::Params().mode == VSA::ThresholdSeeding ? "threshold" : "fixed-count",
-             VSA::Params().thresholdAngleDeg, VSA::Params().initialSeeds, VSA::Params().maxRegions,
+             VSA::Params().thresholdAngleDeg, VSA::Params().initialSeeds,
+             VSA::Params().maxRegions > 0 ? Fmt("<= %d regions", VSA::Params().maxRegions).c_str()
+                                          : "automatic region cap (one per 100 faces, at least 200)",
              VSA::Params().maxIterations),
          {"mesh", "faces", "regions", "Lloyd it. (rounds)", "L2,1 error", "max dev. (deg)", "time (ms)", "ms / Lloyd it."},
          "time: wall clock of VSASegmentation::Segment (face-face topology included), best of the repeats; ms / Lloyd "
@@ -275,6 +277,7 @@ void Usage()
         "                      quad mesh (NAME.ply, faux and front bits in the face flags) for evalquad\n"
         "  --remesh F          Q-Morph re-meshes first to F x the mean edge length of its input\n"
         "  --remesh-diag P     Q-Morph re-meshes first to P %% of the bounding-box diagonal\n"
+        "  --vsa-max-regions K VSA's Max regions on every mesh (threshold mode; 0: automatic, the default)\n"
         "  --no-cleanup, --no-smoothing  Q-Morph without its topological clean-up / tangent-plane smoothing\n"
         "  --no-preserve       Q-Morph with 'Preserve initial front' off\n"
         "  --no-remesh         Q-Morph on the split mesh's own triangles ('Re-mesh first' off)\n"
@@ -340,6 +343,7 @@ QM::Params PluginDefaults()
 QM::Params gQMorphParams = PluginDefaults();
 double gRemeshFactor = 0;  // > 0: Q-Morph re-meshes to this times the mean edge length of its input
 double gRemeshDiagPercent = 0;  // > 0: Q-Morph re-meshes to this % of the bounding-box diagonal
+int gVsaMaxRegions = -1;        // >= 0: VSA's Max regions on every mesh (-1: its default)
 // Front curves after re-meshing: output front points within this fraction of the diagonal of the
 // input front, chords within this fraction of the edge length (the collapse pass's tolerance).
 constexpr double kFrontOnCurve = 1e-5, kFrontChord = 0.1 + 1e-6;
@@ -634,7 +638,9 @@ void RunScaling(const Job &job)
     TMesh work;
     Progress(label, Fmt("%d faces, %d Q-Morph threads", faces, job.threads));
     g_gaps.Start();
-    RunPipeline(input, VSA::Params(), r, work, nullptr, label, true);
+    VSA::Params vp;
+    if (gVsaMaxRegions >= 0) vp.maxRegions = gVsaMaxRegions;
+    RunPipeline(input, vp, r, work, nullptr, label, true);
     g_gaps.Stop();
     g_stageCallback = nullptr;
     if (!r.error.empty()) { Note(label, r.failedStage + ": " + r.error); return; }
@@ -701,6 +707,10 @@ void RunJob(const Job &job, const Options &o)
 
     VSA::Params vp;
     std::string vsaMode = "threshold (defaults)";
+    if (gVsaMaxRegions >= 0) {
+        vp.maxRegions = gVsaMaxRegions;
+        vsaMode = Fmt("threshold, Max regions %d", vp.maxRegions);
+    }
     if (job.big && o.bigVsa == "fixed") {
         vp.mode = VSA::FixedRegionCount;
         vp.maxRegions = o.bigRegions > 0 ? o.bigRegions : 200;
@@ -1042,6 +1052,7 @@ int main(int argc, char **argv)
         else if (a == "--save-dir") o.saveDir = next();
         else if (a == "--remesh") gRemeshFactor = std::atof(next().c_str());
         else if (a == "--remesh-diag") gRemeshDiagPercent = std::atof(next().c_str());
+        else if (a == "--vsa-max-regions") gVsaMaxRegions = std::max(0, std::atoi(next().c_str()));
         else if (a == "--no-preserve") gQMorphParams.preserveInitialFront = false;
         else if (a == "--no-remesh") gQMorphParams.remeshFirst = false;
         else if (a == "--no-cleanup") gQMorphParams.cleanup = false;
