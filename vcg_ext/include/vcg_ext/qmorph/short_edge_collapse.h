@@ -71,12 +71,15 @@ public:
     // Worst triangle quality (vcg::Quality, 1 equilateral) a collapse may leave, unless the star
     // was already worse.
     static constexpr double kMinQuality = 0.15;
+    // Vertices between two progress reports (about a second on a big scan's first round).
+    static constexpr size_t kProgressVertices = 1 << 15;
 
     // One pass over the vertices; features are the selected face-edges (flagged on both sides, a
     // border edge on its one side). Needs vertex-face adjacency; face-face adjacency is rebuilt.
+    // `progress` (optional) gets the fraction of the vertices visited, every kProgressVertices.
     // Returns the number of collapses.
     static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureKind &isFront,
-                  const CurveDeviation &toCurves)
+                  const CurveDeviation &toCurves, const std::function<void(double)> &progress = {})
     {
         vcg::tri::RequireVFAdjacency(m);
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
@@ -89,6 +92,7 @@ public:
         int collapses = 0;
         std::vector<Neighbour> ring;
         for (size_t vi = 0; vi < m.vert.size(); ++vi) {
+            if (progress && vi % kProgressVertices == 0) progress(double(vi) / double(m.vert.size()));
             VertexType *p = &m.vert[vi];
             if (p->IsD() || border[vi]) continue;
             Ring(p, ring);
