@@ -93,6 +93,7 @@ public:
         bool automaticLength = false;  // ... chosen by AutomaticEdgeLength
         typename qmorph::FeatureRemesh<MeshType>::Stats remesh;
         int quads = 0, triangles = 0;
+        int pentagons = 0;  // all quads: triangles merged with a quad before the split (AllQuads::Stats)
         qmorph::PatchStats ops;
         typename qmorph::WorstElementSmoothing<MeshType>::Stats shape;  // the output's final shape pass
         typename qmorph::FlippedFaceMend<MeshType>::Stats mend;         // the output's last check
@@ -105,10 +106,12 @@ public:
             return Format("Q-Morph: %d patches (%d without front), %d initial front edges (%d of them unselected sharp creases); "
                           "%d quads, %d triangles left (%.1f%% of the area in quads); %d quads formed, %d by templates, %d seams, "
                           "%d transition seams, %d transition splits, %d triangle pairs merged, %d doublets removed, %d edges "
-                          "turned, %d quads collapsed and %d opened for valence, %d cavities re-meshed as grids; %d swaps, %d splits; %.3f s",
+                          "turned, %d quads collapsed and %d opened for valence, %d cavities re-meshed as grids; %d swaps, %d splits%s; %.3f s",
                           patches, patchesWithoutFront, initialFrontEdges, creaseEdges, quads, triangles, 100 * quality.quadAreaFraction,
                           ops.quadsFormed, ops.templates, ops.seams, ops.transitionSeams, ops.transitionSplits, ops.pairedTriangles,
-                          ops.doublets, ops.valenceTurns, ops.diagonalCollapses, ops.quadsOpened, ops.cavities, ops.swaps, ops.splits, seconds);
+                          ops.doublets, ops.valenceTurns, ops.diagonalCollapses, ops.quadsOpened, ops.cavities, ops.swaps, ops.splits,
+                          pentagons ? Format("; all quads: %d triangles merged with a quad into a pentagon first", pentagons).c_str() : "",
+                          seconds);
         }
         // The re-meshing in one line; empty when the patches were not re-meshed.
         std::string RemeshSummary() const
@@ -321,7 +324,9 @@ private:
             // counts the pass on the split mesh
             if (raiseWorst) qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
             Progress(cb, 99, "Q-Morph: all quads");
-            res.quads = qmorph::AllQuads<MeshType>::Split(m, input, par.creaseAngleDeg);
+            const typename qmorph::AllQuads<MeshType>::Stats split = qmorph::AllQuads<MeshType>::Split(m, input, par.creaseAngleDeg);
+            res.quads = split.quads;
+            res.pentagons = split.pentagons;
             res.triangles = 0;
         }
         if (raiseWorst) {

@@ -1,0 +1,132 @@
+// The all-quads split (qmorph/all_quads.h) on hand-made meshes in the z = 0 plane: a quad becomes
+// four quads and a triangle three, unless the triangle is a sliver beside a quad, which is first
+// merged with it into a pentagon (five quads).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <vector>
+
+#include "test_mesh.h"
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg_ext/common/polygon_geometry.h>
+#include <vcg_ext/qmorph/all_quads.h>
+#include <vcg_ext/quad_quality.h>
+
+using namespace qmf_test;
+
+namespace {
+
+typedef vcg_ext::qmorph::AllQuads<TMesh> AllQuads;
+typedef vcg::Point3d D3;
+
+// The input: a square of two triangles covering the work area, z = 0, facing +z.
+void MakeInputPlane(TMesh &input)
+{
+    auto v = vcg::tri::Allocator<TMesh>::AddVertices(input, 4);
+    v[0].P() = P3(-2, -2, 0);
+    v[1].P() = P3(6, -2, 0);
+    v[2].P() = P3(6, 6, 0);
+    v[3].P() = P3(-2, 6, 0);
+    vcg::tri::Allocator<TMesh>::AddFace(input, &v[0], &v[1], &v[2]);
+    vcg::tri::Allocator<TMesh>::AddFace(input, &v[0], &v[2], &v[3]);
+}
+
+// The quad A(1,1) B(3,1) C(3,3) D(1,3) (two triangles with a faux diagonal A-C) and the
+// triangle A, apex, B below its edge A-B, all counter-clockwise seen from +z.
+void MakeQuadAndTriangle(TMesh &m, const P3 &apex)
+{
+    auto v = vcg::tri::Allocator<TMesh>::AddVertices(m, 5);
+    v[0].P() = P3(1, 1, 0);
+    v[1].P() = P3(3, 1, 0);
+    v[2].P() = P3(3, 3, 0);
+    v[3].P() = P3(1, 3, 0);
+    v[4].P() = apex;
+    auto f = vcg::tri::Allocator<TMesh>::AddFaces(m, 3);
+    f[0].V(0) = &v[0]; f[0].V(1) = &v[1]; f[0].V(2) = &v[2];
+    f[1].V(0) = &v[0]; f[1].V(1) = &v[2]; f[1].V(2) = &v[3];
+    f[2].V(0) = &v[0]; f[2].V(1) = &v[4]; f[2].V(2) = &v[1];
+    f[0].SetF(2);  // C-A
+    f[1].SetF(0);  // A-C
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+}
+
+// The worst scaled Jacobian (against +z, the input's normal) of m's faces read as polygons, and
+// their count by size.
+double WorstJacobian(TMesh &m, int &quads, int &others)
+{
+    const vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
+    quads = others = 0;
+    double worst = 1;
+    for (const std::vector<int> &f : pm.faces) {
+        if (f.size() != 4) { ++others; continue; }
+        ++quads;
+        const D3 q[4] = {pm.points[f[0]], pm.points[f[1]], pm.points[f[2]], pm.points[f[3]]};
+        worst = std::min(worst, vcg_ext::ScaledJacobian(q, D3(0, 0, 1)));
+    }
+    return worst;
+}
+
+}  // namespace
+
+// A sliver (base 2, height 0.05) against the quad's edge: its own child at the apex would be flat,
+// all four corners within 0.05 of the base line; merged with the quad, the pentagon's five
+// children all turn the right way (the one at the apex, whose angle is nearly straight, is the
+// worst: about 0.1, left to the final shape pass).
+TEST(AllQuads, ASliverBesideAQuadIsMergedIntoAPentagon)
+{
+    TMesh input, m;
+    MakeInputPlane(input);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    const D3 a(1, 1, 0), b(3, 1, 0), apex(2, 0.95, 0);
+    MakeQuadAndTriangle(m, P3::Construct(apex));
+    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
+    EXPECT_EQ(st.pentagons, 1);
+    EXPECT_EQ(st.quads, 5);
+    int quads = 0, others = 0;
+    const double worst = WorstJacobian(m, quads, others);
+    EXPECT_EQ(quads, 5);
+    EXPECT_EQ(others, 0);
+    // the triangle's own child at the apex: apex, midpoint to b, centroid, midpoint from a
+    const D3 apexChild[4] = {apex, (apex + b) / 2, (a + b + apex) / 3, (a + apex) / 2};
+    const double alone = vcg_ext::ScaledJacobian(apexChild, D3(0, 0, 1));
+    EXPECT_LT(alone, 0.05);
+    EXPECT_GT(worst, alone + 0.05);
+    EXPECT_GT(worst, 0.05) << "no flat or flipped child";
+}
+
+// A fair triangle (base 2, height 1.7) is split on its own: three quads, next to the quad's four.
+TEST(AllQuads, AFairTriangleIsSplitOnItsOwn)
+{
+    TMesh input, m;
+    MakeInputPlane(input);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    MakeQuadAndTriangle(m, P3(2, -0.7f, 0));
+    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
+    EXPECT_EQ(st.pentagons, 0);
+    EXPECT_EQ(st.quads, 7);
+    int quads = 0, others = 0;
+    const double worst = WorstJacobian(m, quads, others);
+    EXPECT_EQ(quads, 7);
+    EXPECT_EQ(others, 0);
+    EXPECT_GT(worst, 0.5);
+}
+
+// A sliver whose edge with the quad is a front edge (selected) is never merged across it: the front
+// must stay a chain of edges.
+TEST(AllQuads, NoMergeAcrossAFrontEdge)
+{
+    TMesh input, m;
+    MakeInputPlane(input);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    MakeQuadAndTriangle(m, P3(2, 0.95f, 0));
+    m.face[0].SetFaceEdgeS(0);  // A-B on the quad's side
+    m.face[2].SetFaceEdgeS(2);  // B-A on the triangle's side
+    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
+    EXPECT_EQ(st.pentagons, 0);
+    EXPECT_EQ(st.quads, 7);
+    int selectedHalves = 0;
+    for (const TFace &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k) selectedHalves += f.IsFaceEdgeS(k);
+    EXPECT_EQ(selectedHalves, 4) << "A-B cut in two, each half selected on both sides";
+}
