@@ -66,6 +66,33 @@ double WorstJacobian(TMesh &m, int &quads, int &others)
     return worst;
 }
 
+// The quad and the triangle with that apex split; `frontBetween`: their shared edge A-B selected
+// on both sides (a front edge).
+struct SplitOutcome {
+    AllQuads::Stats stats;
+    int quads = 0, others = 0;  // read back from the mesh
+    double worst = 0;           // WorstJacobian
+    int selectedHalves = 0;     // selected face-edges after the split
+};
+SplitOutcome SplitBesideQuad(const P3 &apex, bool frontBetween = false)
+{
+    TMesh input, m;
+    MakeInputPlane(input);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    MakeQuadAndTriangle(m, apex);
+    if (frontBetween) {
+        m.face[0].SetFaceEdgeS(0);  // A-B on the quad's side
+        m.face[2].SetFaceEdgeS(2);  // B-A on the triangle's side
+    }
+    SplitOutcome r;
+    r.stats = AllQuads::Split(m, surface, 60);
+    r.worst = WorstJacobian(m, r.quads, r.others);
+    for (const TFace &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k) r.selectedHalves += f.IsFaceEdgeS(k);
+    return r;
+}
+
 }  // namespace
 
 // A sliver (base 2, height 0.05) against the quad's edge: its own child at the apex would be flat,
@@ -74,59 +101,37 @@ double WorstJacobian(TMesh &m, int &quads, int &others)
 // worst: about 0.1, left to the final shape pass).
 TEST(AllQuads, ASliverBesideAQuadIsMergedIntoAPentagon)
 {
-    TMesh input, m;
-    MakeInputPlane(input);
-    vcg_ext::InputSurface<TMesh> surface(input);
     const D3 a(1, 1, 0), b(3, 1, 0), apex(2, 0.95, 0);
-    MakeQuadAndTriangle(m, P3::Construct(apex));
-    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
-    EXPECT_EQ(st.pentagons, 1);
-    EXPECT_EQ(st.quads, 5);
-    int quads = 0, others = 0;
-    const double worst = WorstJacobian(m, quads, others);
-    EXPECT_EQ(quads, 5);
-    EXPECT_EQ(others, 0);
+    const SplitOutcome r = SplitBesideQuad(P3::Construct(apex));
+    EXPECT_EQ(r.stats.pentagons, 1);
+    EXPECT_EQ(r.stats.quads, 5);
+    EXPECT_EQ(r.quads, 5);
+    EXPECT_EQ(r.others, 0);
     // the triangle's own child at the apex: apex, midpoint to b, centroid, midpoint from a
     const D3 apexChild[4] = {apex, (apex + b) / 2, (a + b + apex) / 3, (a + apex) / 2};
     const double alone = vcg_ext::ScaledJacobian(apexChild, D3(0, 0, 1));
     EXPECT_LT(alone, 0.05);
-    EXPECT_GT(worst, alone + 0.05);
-    EXPECT_GT(worst, 0.05) << "no flat or flipped child";
+    EXPECT_GT(r.worst, alone + 0.05);
+    EXPECT_GT(r.worst, 0.05) << "no flat or flipped child";
 }
 
 // A fair triangle (base 2, height 1.7) is split on its own: three quads, next to the quad's four.
 TEST(AllQuads, AFairTriangleIsSplitOnItsOwn)
 {
-    TMesh input, m;
-    MakeInputPlane(input);
-    vcg_ext::InputSurface<TMesh> surface(input);
-    MakeQuadAndTriangle(m, P3(2, -0.7f, 0));
-    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
-    EXPECT_EQ(st.pentagons, 0);
-    EXPECT_EQ(st.quads, 7);
-    int quads = 0, others = 0;
-    const double worst = WorstJacobian(m, quads, others);
-    EXPECT_EQ(quads, 7);
-    EXPECT_EQ(others, 0);
-    EXPECT_GT(worst, 0.5);
+    const SplitOutcome r = SplitBesideQuad(P3(2, -0.7f, 0));
+    EXPECT_EQ(r.stats.pentagons, 0);
+    EXPECT_EQ(r.stats.quads, 7);
+    EXPECT_EQ(r.quads, 7);
+    EXPECT_EQ(r.others, 0);
+    EXPECT_GT(r.worst, 0.5);
 }
 
 // A sliver whose edge with the quad is a front edge (selected) is never merged across it: the front
 // must stay a chain of edges.
 TEST(AllQuads, NoMergeAcrossAFrontEdge)
 {
-    TMesh input, m;
-    MakeInputPlane(input);
-    vcg_ext::InputSurface<TMesh> surface(input);
-    MakeQuadAndTriangle(m, P3(2, 0.95f, 0));
-    m.face[0].SetFaceEdgeS(0);  // A-B on the quad's side
-    m.face[2].SetFaceEdgeS(2);  // B-A on the triangle's side
-    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
-    EXPECT_EQ(st.pentagons, 0);
-    EXPECT_EQ(st.quads, 7);
-    int selectedHalves = 0;
-    for (const TFace &f : m.face)
-        if (!f.IsD())
-            for (int k = 0; k < 3; ++k) selectedHalves += f.IsFaceEdgeS(k);
-    EXPECT_EQ(selectedHalves, 4) << "A-B cut in two, each half selected on both sides";
+    const SplitOutcome r = SplitBesideQuad(P3(2, 0.95f, 0), true);
+    EXPECT_EQ(r.stats.pentagons, 0);
+    EXPECT_EQ(r.stats.quads, 7);
+    EXPECT_EQ(r.selectedHalves, 4) << "A-B cut in two, each half selected on both sides";
 }
