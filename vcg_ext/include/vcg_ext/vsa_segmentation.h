@@ -434,9 +434,9 @@ private:
     // parts (a local minimum Lloyd cannot leave). Teleportation (as in CGAL's VSA) merges the
     // adjacent pair that is cheapest to merge, spends the freed seed in the region of largest error,
     // and keeps the change only when the Lloyd iterations that follow lower the total error.
-    void Teleport(Result &res)
+    // `all`: Everything().
+    void Teleport(Result &res, const Scope &all)
     {
-        const Scope all = Everything();
         for (int attempt = 0; attempt < p.teleportAttempts && seeds.size() >= 3; ++attempt) {
             const size_t k = seeds.size();
             std::vector<Vec> sum(k, Vec(0, 0, 0));
@@ -548,7 +548,7 @@ private:
             }
             ++res.seedingRounds;
             Lloyd(p.maxIterations, res, all);
-            Teleport(res);
+            Teleport(res, all);
         }
         // Labels and proxies are those of the last Lloyd step (consistent with each other).
         std::vector<double> maxAngle, regionError;

@@ -207,8 +207,10 @@ private:
     }
 
     // The worst scaled Jacobian, against the input surface's normal under each, of the quads the
-    // split makes of p, with its new points where the split puts them: the centre and the
-    // midpoints of unselected edges on the input surface, those of selected edges straight.
+    // split makes of p, with its new points about where the split puts them: the centre and the
+    // midpoints of unselected edges on the input surface, those of selected edges straight (a
+    // border or sharp edge's midpoint, which the split keeps straight too, is taken as projected:
+    // on the polygon's own edge the two places differ little, and this only decides merges).
     // Corners visited in index order: the same value on a flipped copy.
     static double WorstChild(const Polygon &p, const std::vector<P3> &pos, const std::unordered_set<uint64_t> &selected,
                              InputSurface<MeshType> &surface)
@@ -322,10 +324,9 @@ private:
         const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
         std::vector<Polygon> polygons;
         QuadQuality::ForEachFauxPolygon(m, [&](FaceType &f, const std::array<int, 4> &corners, int n) {
-            const int r = int(std::min_element(corners.begin(), corners.begin() + n) - corners.begin());
-            std::array<int, 5> v{{-1, -1, -1, -1, -1}};
-            for (int k = 0; k < n; ++k) v[k] = corners[(r + k) % n];
-            polygons.push_back({v, n, hasQuality ? float(f.Q()) : 0.f});
+            Polygon p{{{-1, -1, -1, -1, -1}}, n, hasQuality ? float(f.Q()) : 0.f};
+            std::copy(corners.begin(), corners.begin() + n, p.v.begin());
+            polygons.push_back(FromLowest(p));
         });
         return polygons;
     }
