@@ -177,11 +177,13 @@ const TableDef &Def(int t)
         {"Scaling - the whole pipeline on a mesh refined 1x, 4x, 16x (midpoint subdivision), 1 and 2 threads",
          {"mesh", "faces", "threads", "regions", "max dev. (deg)", "VSA (s)", "smoothing (s)", "split (s)", "Q-Morph (s)",
           "total (s)", "us / face", "peak bytes / face", "quad % (area)", "closed, Euler kept", "flipped",
-          "longest progress gap (s)"},
+          "longest progress gap (s)", "longest step without news (s)"},
          "Each row its own process. threads: Q-Morph's pool (QMorph::Params::threads; the other stages run on one "
          "thread). Times: wall clock of the core calls (no file IO), default parameters. peak bytes / face: the process's "
          "VmHWM over the four stages / input faces (the process also holds a copy of the input). longest progress gap: "
-         "the longest time between two progress callbacks from the start of VSA to the end of Q-Morph. flipped: "
+         "the longest time between two progress callbacks from the start of VSA to the end of Q-Morph (what the "
+         "GUI sees: the core relays its last report at least every 0.25 s, common/progress_relay.h). longest step "
+         "without news: the longest time the percent and message stayed the same (one indivisible step). flipped: "
          "Q-Morph's own count against the input surface."},
         {"Notes", {"mesh", "note"}, ""},
     };
@@ -360,24 +362,41 @@ double MeanEdgeLength(const TMesh &m)
 
 // Progress callbacks of the scaling run: the longest time between two of them (MeshLab users see a
 // frozen bar when it is long).
+// Also the longest time the report (percent and message) stayed the same: the core's longest
+// indivisible step, which its progress relay covers with repeated reports.
 struct ProgressGaps {
     bool on = false;
-    Clock::time_point last;
-    double longest = 0;
-    std::string lastMessage = "start", where;  // the callbacks around the longest gap
-    void Start() { on = true; last = Clock::now(); longest = 0; lastMessage = "start"; where.clear(); }
-    void Tick(const char *message)
+    Clock::time_point last, lastNews;
+    double longest = 0, longestSame = 0;
+    int lastPercent = -1;
+    std::string lastMessage = "start", where, whereSame;  // the callbacks around the longest gaps
+    void Start()
+    {
+        on = true;
+        last = lastNews = Clock::now();
+        longest = longestSame = 0;
+        lastPercent = -1;
+        lastMessage = "start";
+        where.clear();
+        whereSame.clear();
+    }
+    void Tick(int percent, const char *message)
     {
         if (!on) return;
         const auto now = Clock::now();
         const double gap = std::chrono::duration<double>(now - last).count();
         if (gap > longest) { longest = gap; where = lastMessage + " -> " + message; }
         last = now;
+        if (percent == lastPercent && message == lastMessage) return;
+        const double same = std::chrono::duration<double>(now - lastNews).count();
+        if (same > longestSame) { longestSame = same; whereSame = lastMessage + " -> " + message; }
+        lastNews = now;
+        lastPercent = percent;
         lastMessage = message;
     }
-    void Stop() { Tick("end"); on = false; }
+    void Stop() { Tick(-1, "end"); on = false; }
 } g_gaps;
-bool GapCallback(const int, const char *message) { g_gaps.Tick(message ? message : ""); return true; }
+bool GapCallback(const int percent, const char *message) { g_gaps.Tick(percent, message ? message : ""); return true; }
 vcg::CallBackPos *g_stageCallback = nullptr;  // passed to every stage (the scaling run sets it)
 
 void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMesh &work, TMesh *splitOut,
@@ -654,7 +673,8 @@ void RunScaling(const Job &job)
                      Sec(r.tVsa), Sec(r.tSmooth), Sec(r.tSplit), Sec(r.tQm), Sec(r.Total()),
                      Fmt("%.2f", 1e6 * r.Total() / faces), Fmt("%.0f", peak * 1048576.0 / faces),
                      Pct(qm.q.quadAreaFraction), YesNo(closed) + ", " + YesNo(qm.euler == eulerIn),
-                     Count(r.qm.quality.flippedFaces), Fmt("%.2f (%s)", g_gaps.longest, g_gaps.where.c_str())});
+                     Count(r.qm.quality.flippedFaces), Fmt("%.2f (%s)", g_gaps.longest, g_gaps.where.c_str()),
+                     Fmt("%.2f (%s)", g_gaps.longestSame, g_gaps.whereSame.c_str())});
 }
 
 // --save-dir: the run's input and output as binary PLY, named after the label's first word

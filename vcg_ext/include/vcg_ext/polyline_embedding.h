@@ -25,6 +25,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/embedding/apply.h>
 #include <vcg_ext/embedding/plan.h>
 #include <vcg_ext/embedding/result.h>
@@ -53,6 +54,29 @@ public:
     static Result Prepare(const MeshType &m, const PolylineType &poly, const Params &p, Plan &plan,
                           vcg::CallBackPos *cb = nullptr)
     {
+        return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) { return PrepareHere(m, poly, p, plan, report); });
+    }
+
+    // Writes a ready plan into the mesh it was prepared on (step 4 included).
+    static Result Apply(MeshType &m, Plan &plan, vcg::CallBackPos *cb = nullptr)
+    {
+        return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) { return ApplyHere(m, plan, report); });
+    }
+
+    // Prepare + Apply.
+    static Result Embed(MeshType &m, const PolylineType &poly, const Params &p, vcg::CallBackPos *cb = nullptr)
+    {
+        return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) {
+            Plan plan;
+            Result r = PrepareHere(m, poly, p, plan, report);
+            if (!r.error.empty()) return r;
+            return ApplyHere(m, plan, report);
+        });
+    }
+
+private:
+    static Result PrepareHere(const MeshType &m, const PolylineType &poly, const Params &p, Plan &plan, vcg::CallBackPos *cb)
+    {
         auto t0 = std::chrono::steady_clock::now();
         plan = Plan();
         Result r;
@@ -69,8 +93,7 @@ public:
         return r;
     }
 
-    // Writes a ready plan into the mesh it was prepared on (step 4 included).
-    static Result Apply(MeshType &m, Plan &plan, vcg::CallBackPos *cb = nullptr)
+    static Result ApplyHere(MeshType &m, Plan &plan, vcg::CallBackPos *cb)
     {
         auto t0 = std::chrono::steady_clock::now();
         Result r = plan.stats;
@@ -87,14 +110,6 @@ public:
         return r;
     }
 
-    // Prepare + Apply.
-    static Result Embed(MeshType &m, const PolylineType &poly, const Params &p, vcg::CallBackPos *cb = nullptr)
-    {
-        Plan plan;
-        Result r = Prepare(m, poly, p, plan, cb);
-        if (!r.error.empty()) return r;
-        return Apply(m, plan, cb);
-    }
 };
 
 }  // namespace vcg_ext

@@ -31,6 +31,7 @@
 #include <vcg_ext/common/format.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/parallel.h>
+#include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph/all_quads.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
@@ -219,16 +220,18 @@ public:
     // Converts m; on bad input (Check) returns the error and leaves m as it is.
     static Result Apply(MeshType &m, const Params &params, vcg::CallBackPos *cb = nullptr)
     {
-        auto t0 = std::chrono::steady_clock::now();
-        Result res;
-        Progress(cb, 0, "Q-Morph: checking the mesh");
-        res.error = Check(m, params);
-        if (!res.error.empty()) return res;
+        return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) {
+            auto t0 = std::chrono::steady_clock::now();
+            Result res;
+            Progress(report, 0, "Q-Morph: checking the mesh");
+            res.error = Check(m, params);
+            if (!res.error.empty()) return res;
 
-        vcg::tri::RequireFFAdjacency(m);  // to read the quads back for the quality report
-        Run(m, params, cb, res);
-        res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return res;
+            vcg::tri::RequireFFAdjacency(m);  // to read the quads back for the quality report
+            Run(m, params, report, res);
+            res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            return res;
+        });
     }
 
 private:

@@ -27,6 +27,7 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
 
 namespace vcg_ext {
@@ -116,6 +117,12 @@ public:
     // face quality (when the mesh has it).
     static Result Segment(MeshType &m, const Params &p, vcg::CallBackPos *cb = nullptr)
     {
+        return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) { return SegmentHere(m, p, report); });
+    }
+
+private:
+    static Result SegmentHere(MeshType &m, const Params &p, vcg::CallBackPos *cb)
+    {
         auto t0 = std::chrono::steady_clock::now();
         Result res;
         if (cb) cb(0, "VSA: checking the mesh");
@@ -136,6 +143,7 @@ public:
         return res;
     }
 
+public:
     // L2,1 error of a labelling against the given proxy normals (for tests and reports).
     static double L21Error(MeshType &m, const std::vector<int> &faceRegion, const std::vector<Vec> &proxy)
     {

@@ -17,6 +17,7 @@
 #include <vcg_ext/boundary/region_boundary.h>
 #include <vcg_ext/boundary/straightening.h>
 #include <vcg_ext/common/edge_layer.h>
+#include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
 
 namespace vcg_ext {
@@ -87,6 +88,53 @@ public:
     // faceRegion: region id per face index (deleted faces ignored). The mesh is not modified.
     static Result Smooth(const MeshType &m, const std::vector<int> &faceRegion, const Params &p, vcg::CallBackPos *cb = nullptr)
     {
+        return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) { return SmoothHere(m, faceRegion, p, report); });
+    }
+
+    // The output polylines: one vertex per distinct point (a corner shared by several curves is
+    // one vertex), one segment per pair of consecutive points, loops closed back to their start.
+    struct Polylines {
+        std::vector<Vec> points;
+        std::vector<SurfacePoint> where;          // per point: its vertex or edge on the source mesh
+        std::vector<std::array<int, 2>> segments;
+        std::vector<int> segmentCurve;             // per segment: its curve index
+    };
+
+    static Polylines ToPolylines(const Topology &t, const std::vector<Curve> &curves)
+    {
+        Polylines out;
+        std::unordered_map<int, int> atVertex;
+        for (size_t c = 0; c < curves.size(); ++c) {
+            const SurfacePath &path = curves[c].path;
+            int first = -1, last = -1;
+            for (const SurfacePoint &q : path.points) {
+                int id = -1;
+                if (q.IsVertex()) {
+                    auto it = atVertex.find(q.vertex);
+                    if (it != atVertex.end()) id = it->second;
+                }
+                if (id < 0) {
+                    id = int(out.points.size());
+                    out.points.push_back(Straightening::Position(t, q));
+                    out.where.push_back(q);
+                    if (q.IsVertex()) atVertex[q.vertex] = id;
+                }
+                if (last >= 0) { out.segments.push_back({last, id}); out.segmentCurve.push_back(int(c)); }
+                if (first < 0) first = id;
+                last = id;
+            }
+            if (path.closed && path.points.size() > 2) { out.segments.push_back({last, first}); out.segmentCurve.push_back(int(c)); }
+        }
+        return out;
+    }
+
+    // Fills an (empty) vcg mesh with the polylines as vertices and edges (an edge-only mesh).
+    template <class EdgeMeshType>
+    static void BuildEdgeMesh(const Polylines &pl, EdgeMeshType &out) { WriteEdgeLayer(pl.points, pl.segments, out); }
+
+private:
+    static Result SmoothHere(const MeshType &m, const std::vector<int> &faceRegion, const Params &p, vcg::CallBackPos *cb)
+    {
         typedef std::chrono::steady_clock Clock;
         auto t0 = Clock::now();
         Result r;
@@ -153,48 +201,6 @@ public:
         return r;
     }
 
-    // The output polylines: one vertex per distinct point (a corner shared by several curves is
-    // one vertex), one segment per pair of consecutive points, loops closed back to their start.
-    struct Polylines {
-        std::vector<Vec> points;
-        std::vector<SurfacePoint> where;          // per point: its vertex or edge on the source mesh
-        std::vector<std::array<int, 2>> segments;
-        std::vector<int> segmentCurve;             // per segment: its curve index
-    };
-
-    static Polylines ToPolylines(const Topology &t, const std::vector<Curve> &curves)
-    {
-        Polylines out;
-        std::unordered_map<int, int> atVertex;
-        for (size_t c = 0; c < curves.size(); ++c) {
-            const SurfacePath &path = curves[c].path;
-            int first = -1, last = -1;
-            for (const SurfacePoint &q : path.points) {
-                int id = -1;
-                if (q.IsVertex()) {
-                    auto it = atVertex.find(q.vertex);
-                    if (it != atVertex.end()) id = it->second;
-                }
-                if (id < 0) {
-                    id = int(out.points.size());
-                    out.points.push_back(Straightening::Position(t, q));
-                    out.where.push_back(q);
-                    if (q.IsVertex()) atVertex[q.vertex] = id;
-                }
-                if (last >= 0) { out.segments.push_back({last, id}); out.segmentCurve.push_back(int(c)); }
-                if (first < 0) first = id;
-                last = id;
-            }
-            if (path.closed && path.points.size() > 2) { out.segments.push_back({last, first}); out.segmentCurve.push_back(int(c)); }
-        }
-        return out;
-    }
-
-    // Fills an (empty) vcg mesh with the polylines as vertices and edges (an edge-only mesh).
-    template <class EdgeMeshType>
-    static void BuildEdgeMesh(const Polylines &pl, EdgeMeshType &out) { WriteEdgeLayer(pl.points, pl.segments, out); }
-
-private:
     // The boundary chain as vertex points. Corners are fixed; a closed loop is pinned at three
     // vertices a third of its length apart and a curve that starts and ends at the same corner
     // at two more, so shortening cannot shrink either to nothing.
