@@ -181,7 +181,7 @@ const TableDef &Def(int t)
          "Each row its own process. threads: Q-Morph's pool (QMorph::Params::threads; the other stages run on one "
          "thread). Times: wall clock of the core calls (no file IO), default parameters. peak bytes / face: the process's "
          "VmHWM over the four stages / input faces (the process also holds a copy of the input). longest progress gap: "
-         "the longest time between two progress callbacks from the start of VSA to the end of Q-Morph (what the "
+         "the longest time between two progress callbacks inside one of the four core calls (what the "
          "GUI sees: the core relays its last report at least every 0.25 s, common/progress_relay.h). longest step "
          "without news: the longest time the percent and message stayed the same (one indivisible step). flipped: "
          "Q-Morph's own count against the input surface."},
@@ -394,7 +394,17 @@ struct ProgressGaps {
         lastPercent = percent;
         lastMessage = message;
     }
-    void Stop() { Tick(-1, "end"); on = false; }
+    // Around each core call: the time between the stages is the benchmark's own (copies, layers)
+    // and MeshLab's between two filters, not a filter's.
+    void Enter(const char *stage)
+    {
+        if (!on) return;
+        last = lastNews = Clock::now();
+        lastPercent = -1;
+        lastMessage = std::string(stage) + " called";
+    }
+    void Leave(const char *stage) { Tick(-1, (std::string(stage) + " returned").c_str()); }
+    void Stop() { on = false; }
 } g_gaps;
 bool GapCallback(const int percent, const char *message) { g_gaps.Tick(percent, message ? message : ""); return true; }
 vcg::CallBackPos *g_stageCallback = nullptr;  // passed to every stage (the scaling run sets it)
@@ -417,7 +427,9 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
 
     // 1. segmentation
     auto t0 = begin(0, "VSA");
+    g_gaps.Enter("VSA");
     r.vsa = VSA::Segment(work, vp, g_stageCallback);
+    g_gaps.Leave("VSA");
     r.tVsa = Since(t0);
     end(0);
     if (!r.vsa.error.empty()) { r.error = r.vsa.error; r.failedStage = "VSA"; return; }
@@ -426,7 +438,9 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
     TMesh poly;
     {
         t0 = begin(1, "boundary smoothing");
+        g_gaps.Enter("smoothing");
         Smoothing::Result s = Smoothing::Smooth(work, r.vsa.faceRegion, Smoothing::Params(), g_stageCallback);
+        g_gaps.Leave("smoothing");
         if (s.error.empty()) {
             Smoothing::Polylines lines = Smoothing::ToPolylines(s.topology, s.curves);
             Smoothing::BuildEdgeMesh(lines, poly);
@@ -450,7 +464,9 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
 
     // 3. split along the front
     t0 = begin(2, "split along the front");
+    g_gaps.Enter("split");
     r.split = Embedding::Embed(work, poly, Embedding::Params(), g_stageCallback);
+    g_gaps.Leave("split");
     r.tSplit = Since(t0);
     end(2);
     r.split.faceRegion.clear();
@@ -472,7 +488,9 @@ void RunPipeline(const TMesh &input, const VSA::Params &vp, PipelineRun &r, TMes
         vcg::tri::UpdateBounding<TMesh>::Box(work);
         qp.targetEdgeLength = gRemeshDiagPercent / 100 * work.bbox.Diag();
     }
+    g_gaps.Enter("Q-Morph");
     r.qm = QM::Apply(work, qp, g_stageCallback);
+    g_gaps.Leave("Q-Morph");
     r.tQm = Since(t0);
     end(3);
     if (!r.qm.error.empty()) { r.error = r.qm.error; r.failedStage = "Q-Morph"; return; }

@@ -113,11 +113,13 @@ public:
         return par;
     }
 
+    vcg::CallBackPos *callback = nullptr;  // MeshLab's progress callback, passed to applyFilter
+
     FilterRun Apply(const QString &filterName, const RichParameterList &par)
     {
         FilterRun r;
         int before = log.logStringList().size();
-        r.ok = plugin.applyFilter(Action(filterName), doc, par, nullptr);
+        r.ok = plugin.applyFilter(Action(filterName), doc, par, callback);
         r.error = plugin.errorMsg().toStdString();
         const auto &lines = log.logStringList();
         for (int i = before; i < lines.size(); ++i) r.log.push_back(lines[i].second.toStdString());

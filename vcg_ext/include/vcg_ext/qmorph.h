@@ -11,6 +11,7 @@
 #define VCG_EXT_QMORPH_H
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <climits>
 #include <iterator>
@@ -238,6 +239,8 @@ private:
     static constexpr double kEquilateralArea = 0.43301270189221932;  // sqrt(3) / 4, unit side
     static constexpr double kMaxAutoTriangles = 250000;
     static constexpr double kMaxAutoDiagonalFraction = 0.01;
+    // The re-meshing's share of the progress bar (about half of the stage's time on big scans).
+    static constexpr int kRemeshProgress = 50;
 
     static void Progress(vcg::CallBackPos *cb, int percent, const char *msg)
     {
@@ -250,12 +253,13 @@ private:
     {
         res.targetEdgeLength = RemeshLength(m, par);
         res.automaticLength = res.targetEdgeLength > 0 && !(par.targetEdgeLength > 0);
-        Progress(cb, 0, "Q-Morph: the input surface");
-        InputSurface<MeshType> input(m);  // the quality report's reference (and the re-meshing's)
+        InputSurface<MeshType> input(m, cb);  // the quality report's reference (and the re-meshing's)
         if (res.targetEdgeLength > 0) {
-            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, res.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg, cb);
+            res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, res.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg,
+                                                             cb, kRemeshProgress);
         }
-        Progress(cb, 1, "Q-Morph: patches");
+        const int patchesFrom = res.targetEdgeLength > 0 ? kRemeshProgress : 1;
+        Progress(cb, patchesFrom, "Q-Morph: patches, partition");
         qmorph::FrontPartition part;
         part.Build(m, par.creaseAngleDeg);
         res.initialFrontEdges = part.frontEdges;
@@ -276,7 +280,9 @@ private:
             qmorph::PatchStats ops;
             bool hasFront = false;
         };
-        size_t facesDone = 0;
+        // counted as patches finish, not as they merge: merges wait for patch order, and a small
+        // patch started last (biggest first) held the percent still for most of the stage
+        std::atomic<size_t> facesDone{0};
         OrderedParallelFor<Meshed>(
             patches.size(), ThreadCount(par.threads), biggestFirst,
             [&](size_t i) {
@@ -307,16 +313,19 @@ private:
                     r.ops = qmorph::PatchMesher(mm, surface, in.home, pp).Run();
                 }
                 r.polygons = qmorph::QuadOutput::Collect(mm, surface, in.home, in);
+                facesDone += end - begin;
                 return r;
             },
-            [&](size_t i, Meshed &&r) {
+            [&](size_t, Meshed &&r) {
                 ++res.patches;
                 if (!r.hasFront) ++res.patchesWithoutFront;
                 res.ops += r.ops;
                 out.Append(r.polygons);
-                facesDone += patches[i].second - patches[i].first;
             },
-            [&]() { Progress(cb, int(100.0 * facesDone / std::max<size_t>(1, part.order.size())), "Q-Morph: meshing patches"); });
+            [&]() {
+                const double done = double(facesDone.load()) / double(std::max<size_t>(1, part.order.size()));
+                Progress(cb, patchesFrom + int((99 - patchesFrom) * done), "Q-Morph: meshing patches");
+            });
         res.quads = out.quads;
         res.triangles = out.triangles;
         Progress(cb, 99, "Q-Morph: writing the quad mesh");

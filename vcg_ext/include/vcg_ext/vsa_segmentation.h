@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <queue>
 #include <random>
@@ -185,6 +186,8 @@ private:
     MeshType &m;
     const Params &p;
     vcg::CallBackPos *cb;
+    int roundPercent = 0;  // the current seeding round's progress, repeated by its Lloyd iterations
+    static constexpr int kSeedingFromPercent = 3;  // where the seeding's progress starts (after the set-up)
     int n;                          // face vector size (deleted faces included, never labelled)
     std::vector<double> area;
     std::vector<Vec> normal;
@@ -220,6 +223,17 @@ private:
     void Progress(int percent, const char *what) const
     {
         if (cb) cb(std::min(99, std::max(0, percent)), what);
+    }
+
+    // Progress inside a Lloyd run, once per iteration (at the percent of its seeding round): a
+    // round takes seconds on a big mesh, and the threshold mode's rounds are not known ahead.
+    void ReportIteration(const Result &res, int iteration) const
+    {
+        if (!cb) return;
+        char what[96];
+        std::snprintf(what, sizeof what, "VSA: seeding round %d, %d regions, Lloyd iteration %d", res.seedingRounds,
+                      int(seeds.size()), iteration + 1);
+        Progress(roundPercent, what);
     }
 
     // The faces a Lloyd iteration works on, in index order (so sums and ties come out the same
@@ -328,6 +342,7 @@ private:
         FitProxies(scope);
         double e = TotalError(scope);
         for (int it = 0; it < maxIterations; ++it) {
+            ReportIteration(res, it);
             ReseedAtBestFaces(scope);
             Partition(scope);
             FitProxies(scope);
@@ -414,6 +429,19 @@ private:
     }
 
     // Per region: largest angle between a face normal and the proxy, and the face of largest error.
+    // The share of the surface's area in regions whose largest normal deviation is within the
+    // threshold angle (maxAngle: per region, from RegionStats).
+    double AreaWithin(const std::vector<double> &maxAngle) const
+    {
+        double within = 0, total = 0;
+        for (int f = 0; f < n; ++f) {
+            if (label[f] < 0) continue;
+            total += area[f];
+            if (maxAngle[label[f]] <= p.thresholdAngleDeg) within += area[f];
+        }
+        return total > 0 ? within / total : 1;
+    }
+
     void RegionStats(std::vector<double> &maxAngle, std::vector<int> &worstFace, std::vector<double> &regionError) const
     {
         size_t k = seeds.size();
@@ -519,11 +547,16 @@ private:
             bool local = false;
             for (;;) {
                 ++res.seedingRounds;
-                Progress(int(100.0 * seeds.size() / cap), "VSA: Lloyd iterations");
+                roundPercent = std::max(roundPercent, int(100.0 * seeds.size() / cap));
+                Progress(roundPercent, "VSA: Lloyd iterations");
                 Lloyd(p.maxIterations, res, local ? tail : all);
                 std::vector<double> maxAngle, regionError;
                 std::vector<int> worstFace;
                 RegionStats(maxAngle, worstFace, regionError);
+                // the rounds are not known ahead: the share of the area whose region already meets
+                // the threshold tells how far the seeding is (the cap's share stays small when the
+                // automatic cap is far from binding)
+                roundPercent = std::max(roundPercent, kSeedingFromPercent + int((99 - kSeedingFromPercent) * AreaWithin(maxAngle)));
                 std::vector<int> split;
                 for (size_t r = 0; r < seeds.size(); ++r)
                     if (maxAngle[r] > p.thresholdAngleDeg && worstFace[r] >= 0) split.push_back(int(r));
@@ -543,7 +576,8 @@ private:
             InitialSeeds(std::min(p.initialSeeds, target), res);
             while (int(seeds.size()) < target) {
                 ++res.seedingRounds;
-                Progress(int(100.0 * seeds.size() / target), "VSA: incremental seeding");
+                roundPercent = int(100.0 * seeds.size() / target);
+                Progress(roundPercent, "VSA: incremental seeding");
                 Lloyd(std::min(p.relaxationsPerSeed, p.maxIterations), res, all);
                 std::vector<double> maxAngle, regionError;
                 std::vector<int> worstFace;

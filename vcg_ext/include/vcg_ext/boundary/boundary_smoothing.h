@@ -138,6 +138,7 @@ private:
         typedef std::chrono::steady_clock Clock;
         auto t0 = Clock::now();
         Result r;
+        if (cb) cb(0, "Region boundaries: checking the mesh");
         r.error = Check(m, p);
         if (!r.error.empty()) return r;
         if (faceRegion.size() != m.face.size()) { r.error = "one region id per face is needed"; return r; }

@@ -2,7 +2,7 @@
 // Half-edge h = 3 f + k of triangle f runs from tris[f][k] to tris[f][(k + 1) % 3]. The half-edges
 // are grouped by the undirected edge they lie on (sorted by edge key, then by index): an edge with
 // one half-edge is a boundary, with two a manifold edge (its twins), with more a non-manifold edge.
-// O(F log F), no vcg adjacency needed, the mesh is never touched.
+// O(F), no vcg adjacency needed, the mesh is never touched.
 #ifndef VCG_EXT_COMMON_EDGE_PAIRING_H
 #define VCG_EXT_COMMON_EDGE_PAIRING_H
 
@@ -37,23 +37,43 @@ public:
 
     static Groups Group(const std::vector<Triangle> &tris, const std::vector<char> &skip = std::vector<char>())
     {
-        std::vector<std::pair<uint64_t, int>> keyed;
-        keyed.reserve(3 * tris.size());
-        for (size_t f = 0; f < tris.size(); ++f) {
-            if (tris[f][0] < 0) continue;
-            for (int k = 0; k < 3; ++k) {
-                const int h = int(3 * f) + k, a = tris[f][k], b = tris[f][(k + 1) % 3];
-                if (a == b || (!skip.empty() && skip[h])) continue;
-                keyed.push_back({EdgeKey(a, b), h});
-            }
-        }
-        std::sort(keyed.begin(), keyed.end());
+        // Linear: the half-edges bucketed by their edge's lower vertex (a counting sort, stable in
+        // half-edge order), then each bucket (one vertex's few edges) sorted by the higher vertex;
+        // the same order as sorting by (edge key, half-edge), without an O(F log F) sort of
+        // millions of keys (it ran on every whole-mesh topology build).
+        auto kept = [&](size_t f, int k) {
+            const int h = int(3 * f) + k;
+            return tris[f][k] != tris[f][(k + 1) % 3] && (skip.empty() || !skip[h]);
+        };
+        int vertices = 0;
+        for (const Triangle &t : tris)
+            if (t[0] >= 0) vertices = std::max(vertices, std::max(t[0], std::max(t[1], t[2])) + 1);
+        std::vector<int> bucketStart(size_t(vertices) + 1, 0);
+        for (size_t f = 0; f < tris.size(); ++f)
+            if (tris[f][0] >= 0)
+                for (int k = 0; k < 3; ++k)
+                    if (kept(f, k)) ++bucketStart[size_t(std::min(tris[f][k], tris[f][(k + 1) % 3])) + 1];
+        for (int v = 0; v < vertices; ++v) bucketStart[v + 1] += bucketStart[v];
+        std::vector<std::pair<int, int>> entries(size_t(bucketStart[vertices]));  // (higher vertex, half-edge)
+        std::vector<int> fill(bucketStart.begin(), bucketStart.end() - 1);
+        for (size_t f = 0; f < tris.size(); ++f)
+            if (tris[f][0] >= 0)
+                for (int k = 0; k < 3; ++k)
+                    if (kept(f, k)) {
+                        const int a = tris[f][k], b = tris[f][(k + 1) % 3];
+                        entries[size_t(fill[std::min(a, b)]++)] = {std::max(a, b), int(3 * f) + k};
+                    }
         Groups g;
-        g.halfEdges.resize(keyed.size());
+        g.halfEdges.resize(entries.size());
         g.start.push_back(0);
-        for (size_t i = 0; i < keyed.size(); ++i) {
-            g.halfEdges[i] = keyed[i].second;
-            if (i + 1 == keyed.size() || keyed[i + 1].first != keyed[i].first) g.start.push_back(int(i + 1));
+        for (int v = 0; v < vertices; ++v) {
+            const auto first = entries.begin() + bucketStart[v], last = entries.begin() + bucketStart[v + 1];
+            std::sort(first, last);
+            for (auto it = first; it != last; ++it) {
+                const size_t i = size_t(it - entries.begin());
+                g.halfEdges[i] = it->second;
+                if (it + 1 == last || (it + 1)->first != it->first) g.start.push_back(int(i + 1));
+            }
         }
         return g;
     }

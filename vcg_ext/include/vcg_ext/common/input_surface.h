@@ -23,6 +23,7 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/space/index/grid_static_ptr.h>
+#include <wrap/callback.h>
 
 #include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
@@ -44,17 +45,22 @@ public:
     MeshType mesh;  // read canonically (normals too, as vcg's closest-point code needs); no adjacency
     Grid grid;
 
-    explicit InputSurface(MeshType &m)
+    // cb (optional): each step reported at `percent` (seconds each on millions of faces).
+    explicit InputSurface(MeshType &m, vcg::CallBackPos *cb = nullptr, int percent = 0)
     {
+        if (cb) cb(percent, "Q-Morph: the input surface, copy");
         EnableMark(mesh.face, 0);  // our queries need no marks; vcglib's (e.g. the re-meshing's) may
         vcg::tri::Append<MeshType, MeshType>::MeshCopy(mesh, m);
+        if (cb) cb(percent, "Q-Morph: the input surface, read canonically");
         CanonicalFaces canon;
         canon.Read(mesh);
         for (size_t f = 0; f < mesh.face.size(); ++f) FaceCorners<MeshType>::Reorder(mesh, mesh.face[f], canon.corner[f]);
         reversed = canon.reversed;
         vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(mesh);
         vcg::tri::UpdateBounding<MeshType>::Box(mesh);
+        if (cb) cb(percent, "Q-Morph: the input surface, grid");
         grid.Set(mesh.face.begin(), mesh.face.end(), int(kCellsPerFace * mesh.face.size()));
+        if (cb) cb(percent, "Q-Morph: the input surface, sharp creases");
         std::vector<EdgePairing::Triangle> tris;
         for (const FaceType &f : mesh.face)
             tris.push_back({int(vcg::tri::Index(mesh, f.cV(0))), int(vcg::tri::Index(mesh, f.cV(1))), int(vcg::tri::Index(mesh, f.cV(2)))});

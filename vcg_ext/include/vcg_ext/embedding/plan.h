@@ -44,6 +44,7 @@ public:
         if (poly.en == 0) return Fail(poly.fn > 0 ? "the polyline layer has no edges (it is a triangle mesh, not a polyline)"
                                                   : "the polyline layer has no edges");
         Lap lap;
+        Progress(cb, 0, "Split along front: checking the mesh");
         const std::string meshProblem = CheckMesh(m);
         if (!meshProblem.empty()) {
             r.inputProblem = true;

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -66,18 +67,21 @@ public:
 
     // Re-meshes m toward edge length L in `iterations` rounds; edges sharper than creaseAngleDeg
     // (normals) are kept like the front. Needs face-face and vertex-face adjacency.
-    // `surface`: the input, as it is now (vertices are projected back onto it).
+    // `surface`: the input, as it is now (vertices are projected back onto it). Progress goes from
+    // 0 to progressTo percent.
     static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double L, int iterations, double creaseAngleDeg,
-                    vcg::CallBackPos *cb = nullptr)
+                    vcg::CallBackPos *cb = nullptr, int progressTo = 100)
     {
         vcg::tri::RequireVFAdjacency(m);
         vcg::tri::RequirePerVertexMark(m);
         vcg::tri::RequirePerFaceMark(m);
         Stats st;
+        if (cb) cb(0, "Q-Morph: re-meshing, reading the mesh");
         vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
         st.facesBefore = m.fn;
         const int reversedBit = ReadCanonically(m);
         surface.UseCanonicalOrientation(true);
+        if (cb) cb(0, "Q-Morph: re-meshing, features");
         SegmentGrid features(L);
         std::vector<char> isFront;
         MarkFeatures(m, creaseAngleDeg, features, isFront, st);
@@ -94,25 +98,32 @@ public:
         for (int it = 0; it < iterations; ++it) {
             // each step of each round reports (the collapses of the first round on a big scan, which
             // remove most of its faces, report as they go)
+            // the round and step in the message: a round's share of the bar is a few percent
             auto progress = [&](double done, const char *step) {
-                if (cb) cb(int(100 * (it + done) / iterations), step);
+                if (!cb) return;
+                char what[96];
+                std::snprintf(what, sizeof what, "Q-Morph: re-meshing, round %d of %d, %s", it + 1, iterations, step);
+                cb(int(progressTo * (it + done) / iterations), what);
             };
-            progress(0, "Q-Morph: re-meshing, splits");
+            progress(0, "splits");
             // split toward no edge longer than 4/3 L (see kMaxSplitPasses); vcglib's pass costs a
             // grid over the whole input even when it has nothing to split, so it is skipped then
             for (int pass = 0; pass < kMaxSplitPasses && HasLongEdge(m, p) && Pass(m, surface.mesh, p, st, true, false) > 0; ++pass) {}
-            progress(kCollapseStart, "Q-Morph: re-meshing, collapses");
+            progress(kCollapseStart, "collapses");
             st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, isFrontEdge, toFeatures, [&](double done) {
-                progress(kCollapseStart + done * (kFlipStart - kCollapseStart), "Q-Morph: re-meshing, collapses");
+                char step[48];
+                std::snprintf(step, sizeof step, "collapses (%d%% of the vertices)", int(100 * done));
+                progress(kCollapseStart + done * (kFlipStart - kCollapseStart), step);
             });
-            progress(kFlipStart, "Q-Morph: re-meshing, flips");
+            progress(kFlipStart, "flips");
             Pass(m, surface.mesh, p, st, false, true);  // flip toward valence 6
-            progress(kRelaxStart, "Q-Morph: re-meshing, relaxation");
+            progress(kRelaxStart, "relaxation");
             vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
             vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
             const std::vector<char> fixed = FeatureVertices(m);
             for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed);
         }
+        if (cb) cb(progressTo, "Q-Morph: re-meshing, feature strips and last checks");
         st.facingSplits = FacingFeatures<MeshType>::Do(m, L);
         st.turnedBack = TurnBackFlippedFaces(m, surface);
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
