@@ -123,9 +123,11 @@ public:
             const std::vector<char> fixed = FeatureVertices(m);
             for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed);
         }
-        if (cb) cb(progressTo, "Q-Morph: re-meshing, feature strips and last checks");
+        if (cb) cb(progressTo, "Q-Morph: re-meshing, feature strips");
         st.facingSplits = FacingFeatures<MeshType>::Do(m, L);
+        if (cb) cb(progressTo, "Q-Morph: re-meshing, faces turned away from the input");
         st.turnedBack = TurnBackFlippedFaces(m, surface);
+        if (cb) cb(progressTo, "Q-Morph: re-meshing, the front selected again");
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
         SelectFront(m, features, isFront, st);
         BackToInputOrientation(m, reversedBit);
