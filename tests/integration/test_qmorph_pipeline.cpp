@@ -143,7 +143,9 @@ void RunPipeline(const std::string &mesh, double hausdorffBound, double remeshFr
     for (auto &f : obj.f) (f.size() == 4 ? objQuads : objTris)++;
     EXPECT_EQ(objQuads, quads);
     EXPECT_EQ(objTris, tris);
-    if (allQuads) EXPECT_EQ(objTris, 0) << "All quads on";
+    if (allQuads) {
+        EXPECT_EQ(objTris, 0) << "All quads on";
+    }
     EXPECT_GT(double(quads) / (quads + tris), 0.9);
     std::map<std::pair<int, int>, int> uses;
     for (auto &f : obj.f)

@@ -17,32 +17,6 @@ typedef vcg_ext::QMorph<TMesh> QM;
 
 namespace {
 
-// Everything Q-Morph writes, as bytes: coordinates, face vertex indices, flags, quality.
-std::vector<unsigned char> MeshBytes(const TMesh &m)
-{
-    std::vector<unsigned char> b;
-    auto put = [&b](const void *p, size_t n) {
-        const unsigned char *c = static_cast<const unsigned char *>(p);
-        b.insert(b.end(), c, c + n);
-    };
-    for (const auto &v : m.vert) {
-        if (v.IsD()) continue;
-        put(&v.cP()[0], 3 * sizeof(float));
-    }
-    for (const auto &f : m.face) {
-        if (f.IsD()) continue;
-        for (int k = 0; k < 3; ++k) {
-            const int i = int(vcg::tri::Index(m, f.cV(k)));
-            put(&i, sizeof i);
-        }
-        const int flags = f.cFlags();
-        put(&flags, sizeof flags);
-        const float q = f.cQ();
-        put(&q, sizeof q);
-    }
-    return b;
-}
-
 // elephant segmented by VSA, its region boundaries selected: well over a hundred patches.
 bool LoadElephantWithRegionFronts(TMesh &m)
 {

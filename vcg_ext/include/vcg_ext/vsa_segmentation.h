@@ -121,30 +121,6 @@ public:
         return ProgressRelay::Run(cb, [&](vcg::CallBackPos *report) { return SegmentHere(m, p, report); });
     }
 
-private:
-    static Result SegmentHere(MeshType &m, const Params &p, vcg::CallBackPos *cb)
-    {
-        auto t0 = std::chrono::steady_clock::now();
-        Result res;
-        if (cb) cb(0, "VSA: checking the mesh");
-        res.error = Check(m, p, &res.warning);
-        if (!res.error.empty()) return res;
-        vcg::tri::RequireFFAdjacency(m);
-        if (cb) cb(1, "VSA: face adjacency");
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
-
-        if (cb) cb(3, "VSA: face areas and normals");
-        VSASegmentation s(m, p, cb);
-        s.Run(res);
-
-        if (vcg::tri::HasPerFaceQuality(m))
-            for (FaceType &f : m.face)
-                if (!f.IsD()) f.Q() = typename MeshType::ScalarType(res.faceRegion[vcg::tri::Index(m, f)]);
-        res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return res;
-    }
-
-public:
     // L2,1 error of a labelling against the given proxy normals (for tests and reports).
     static double L21Error(MeshType &m, const std::vector<int> &faceRegion, const std::vector<Vec> &proxy)
     {
@@ -219,6 +195,29 @@ private:
     }
 
     double Error(int face, int region) const { return area[face] * (normal[face] - proxy[region]).SquaredNorm(); }
+
+    // Segment, on the thread the progress relay runs it on.
+    static Result SegmentHere(MeshType &m, const Params &p, vcg::CallBackPos *cb)
+    {
+        auto t0 = std::chrono::steady_clock::now();
+        Result res;
+        if (cb) cb(0, "VSA: checking the mesh");
+        res.error = Check(m, p, &res.warning);
+        if (!res.error.empty()) return res;
+        vcg::tri::RequireFFAdjacency(m);
+        if (cb) cb(1, "VSA: face adjacency");
+        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+
+        if (cb) cb(3, "VSA: face areas and normals");
+        VSASegmentation s(m, p, cb);
+        s.Run(res);
+
+        if (vcg::tri::HasPerFaceQuality(m))
+            for (FaceType &f : m.face)
+                if (!f.IsD()) f.Q() = typename MeshType::ScalarType(res.faceRegion[vcg::tri::Index(m, f)]);
+        res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return res;
+    }
 
     void Progress(int percent, const char *what) const
     {
@@ -428,7 +427,6 @@ private:
             if (!compSeeded[c]) AddSeed(compFace[c]);
     }
 
-    // Per region: largest angle between a face normal and the proxy, and the face of largest error.
     // The share of the surface's area in regions whose largest normal deviation is within the
     // threshold angle (maxAngle: per region, from RegionStats).
     double AreaWithin(const std::vector<double> &maxAngle) const
@@ -442,6 +440,7 @@ private:
         return total > 0 ? within / total : 1;
     }
 
+    // Per region: largest angle between a face normal and the proxy, and the face of largest error.
     void RegionStats(std::vector<double> &maxAngle, std::vector<int> &worstFace, std::vector<double> &regionError) const
     {
         size_t k = seeds.size();
