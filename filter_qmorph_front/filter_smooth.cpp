@@ -74,6 +74,12 @@ bool QMorphFrontPlugin::applySmooth(MeshDocument &md, const RichParameterList &p
     front->UpdateBoxAndNormals();
     if (cb) cb(100, "Smooth Region Boundaries: done");
 
+    if (r.thinRegions)
+        Log("Smooth Region Boundaries: %d regions thinner than %.0f%% of the mean triangle side merged into a neighbour",
+            r.thinRegions, 100 * Smoothing::kThinRegionWidth);
+    if (r.heldCreasePoints)
+        Log("Smooth Region Boundaries: %d boundary points held on creases (both edges at least %.0f degrees sharp)",
+            r.heldCreasePoints, Smoothing::kHeldCreaseDeg);
     if (r.mergedRegions)
         Log("Smooth Region Boundaries: %d regions smaller than %d faces merged into a neighbour", r.mergedRegions,
             p.minRegionFaces);

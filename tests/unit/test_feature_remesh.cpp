@@ -365,3 +365,36 @@ TEST(FeatureRemesh, ChordsOfASmoothFrontStayNearTheInputCurve)
     EXPECT_EQ(FrontCurveMismatches(front, frontAfter, kOnCurve * input.bbox.Diag(), kChord * L), 0)
         << "front edges farther than 0.1 L from the input's curve (or their vertices off it)";
 }
+
+// A cube (4 x 4 cells a side, cells 0.5) whose top has needles turned over: one vertex moved
+// across a grid line, 0.001 beyond the middle of the far edge of one of its triangles. Its two
+// triangles on that line become needles about 0.001 high facing down; they meet each other, the
+// rest of the top and the faces across the line at about 180 degrees along 4 edges. Those are
+// noise at L = 0.5 (height < 0.05 L), not creases; the cube's 12 edges (48 pieces) are.
+TEST(FeatureRemesh, SharpEdgesOfANeedleTurnedOverAreNotCreases)
+{
+    TMesh m;
+    MakeCube(m, 4);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    vcg::tri::UpdateTopology<TMesh>::VertexFace(m);
+    TVertex *v = nullptr;
+    for (TVertex &x : m.vert)
+        if (std::fabs(x.P()[0] + 0.5f) < 1e-6f && std::fabs(x.P()[1] + 0.5f) < 1e-6f && std::fabs(x.P()[2] - 1) < 1e-6f) v = &x;
+    ASSERT_NE(v, nullptr);
+    vcg::face::VFIterator<TFace> vfi(v);
+    TFace *needle = vfi.F();
+    const int corner = vfi.I();
+    const P3 a = needle->P1(corner), b = needle->P2(corner), mid = (a + b) * 0.5f;
+    v->P() = mid + (mid - v->P()).Normalize() * 0.001f;
+    ASSERT_LT(vcg::TriangleNormal(*needle).Normalize()[2], -0.99f) << "the needle faces down";
+    int facingDown = 0;
+    for (const TFace &f : m.face) facingDown += vcg::TriangleNormal(f).Normalize()[2] < -0.99f && f.cP(0)[2] > 0.999f;
+    ASSERT_EQ(facingDown, 2);
+
+    TMesh copy;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(copy, m);
+    vcg_ext::InputSurface<TMesh> surface(copy);
+    const auto st = vcg_ext::qmorph::FeatureRemesh<TMesh>::Do(m, surface, 0.5, 1, 60);
+    EXPECT_EQ(st.needleCreases, 4);
+    EXPECT_EQ(st.featureEdges, 48) << "the cube's edges, and nothing else";
+}

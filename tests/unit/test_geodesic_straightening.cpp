@@ -354,3 +354,33 @@ TEST(GeodesicStraightening, RefusesBadInput)
     m.vert[3].P()[1] = std::numeric_limits<float>::quiet_NaN();
     EXPECT_NE(RunSmoothing(m, two, 3).error.find("NaN"), std::string::npos);
 }
+
+TEST(GeodesicStraightening, BoundariesAlongACreaseStayOnIt)
+{
+    // Caps and side of a cylinder as three regions: the two boundaries are the rims, closed loops of
+    // 90-degree creases. Shortened, each would cut across its cap toward the triangle of its three
+    // anchors; held, every point stays on a rim vertex and the length stays the same.
+    const int slices = 24;
+    TMesh m;
+    MakeCylinder(m, slices, 4, 1.f, 2.f, 3);
+    auto region = SetRegions(m, [&](int f) {
+        const D3 c = Centroid(m, f);
+        return c[2] > 0.999 ? 0 : (c[2] < -0.999 ? 1 : 2);
+    });
+    Smoothing::Result r = RunSmoothing(m, region, 50);
+    ASSERT_EQ(r.error, "");
+    ASSERT_EQ(r.curves.size(), 2u);
+    EXPECT_EQ(r.closedLoops, 2);
+    EXPECT_EQ(r.heldCreasePoints, 2 * (slices - 3)) << "every rim point but the three anchors of each loop";
+    EXPECT_NEAR(r.lengthAfter, r.lengthBefore, 1e-9 * r.lengthBefore);
+    for (const auto &c : r.curves) {
+        ASSERT_EQ(c.path.points.size(), size_t(slices));
+        for (const SP &p : c.path.points) {
+            ASSERT_TRUE(p.IsVertex());
+            const D3 q = D3::Construct(m.vert[p.vertex].cP());
+            EXPECT_NEAR(std::fabs(q[2]), 1.0, 1e-6);
+            EXPECT_NEAR(std::hypot(q[0], q[1]), 1.0, 1e-6);
+        }
+    }
+    ExpectInvariants(m, r, 0.1);
+}

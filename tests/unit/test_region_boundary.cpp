@@ -6,6 +6,7 @@
 
 #include "boundary_test_meshes.h"
 #include "test_mesh.h"
+#include <vcg_ext/boundary/boundary_smoothing.h>
 #include <vcg_ext/boundary/region_boundary.h>
 
 using namespace qmf_test;
@@ -256,6 +257,71 @@ TEST(MergeSmallRegions, TinyRegionJoinsTheNeighbourWithTheLongestSharedBoundary)
     }
     EXPECT_EQ(vcg_ext::MergeSmallRegions(t, region, 0, &merged), region);
     EXPECT_EQ(merged, 0);
+}
+
+TEST(MergeThinRegions, AStripAHairWideJoinsANeighbourAndASmallFatRegionStays)
+{
+    // A 10 x 10 grid whose row of cells j = 5 is squeezed to 0.0005 high: that row is region 2, a
+    // strip of width 2 * area / boundary = 2 * 0.0005 / 2 = 0.0005 (its ends are on the grid's
+    // border, not shared). Below it region 0, above region 1, and one cell (0.1 x 0.1, width
+    // 2 * 0.01 / 0.4 = 0.05) is region 3.
+    const int n = 10;
+    TMesh m;
+    MakeGrid(m, n, 1.f, 0.f, 1, true);
+    for (auto &v : m.vert) {
+        const int row = int(std::lround(v.P()[1] * n));
+        v.P()[1] = row <= 5 ? float(row) / n : float(row - 1) / n + 0.0005f;
+    }
+    auto region = SetRegions(m, [&](int f) {
+        int i, j;
+        GridCell(n, f, i, j);
+        if (i == 2 && j == 2) return 3;
+        return j == 5 ? 2 : (j < 5 ? 0 : 1);
+    });
+    Topo t;
+    t.Build(m);
+    int merged = -1;
+    // The strip shares 1.0 with regions 0 and 1: the tie goes to the lower id.
+    std::vector<int> out = vcg_ext::MergeThinRegions(t, region, 0.001, &merged);
+    EXPECT_EQ(merged, 1);
+    for (size_t f = 0; f < out.size(); ++f) ASSERT_EQ(out[f], region[f] == 2 ? 0 : region[f]) << f;
+    // Wider than the strip, narrower than the cell: the same; wider than the cell: the cell goes too.
+    EXPECT_EQ(vcg_ext::MergeThinRegions(t, region, 0.049, &merged), out);
+    vcg_ext::MergeThinRegions(t, region, 0.051, &merged);
+    EXPECT_EQ(merged, 2);
+    EXPECT_EQ(vcg_ext::MergeThinRegions(t, region, 0, &merged), region);
+    EXPECT_EQ(merged, 0);
+}
+
+TEST(MergeThinRegions, TheSmoothingMergesStripsThinnerThanItsShareOfTheMeanTriangleSide)
+{
+    // The same squeezed grid through the whole filter: the mean triangle side is
+    // sqrt(area / (faces * sqrt(3) / 4)) = sqrt(0.9005 / (200 * 0.4330)) = 0.1020, so strips below
+    // 0.05 * 0.1020 = 0.0051 go; the 0.0005 strip does, the cell (0.05) stays.
+    const int n = 10;
+    TMesh m;
+    MakeGrid(m, n, 1.f, 0.f, 1, true);
+    for (auto &v : m.vert) {
+        const int row = int(std::lround(v.P()[1] * n));
+        v.P()[1] = row <= 5 ? float(row) / n : float(row - 1) / n + 0.0005f;
+    }
+    auto region = SetRegions(m, [&](int f) {
+        int i, j;
+        GridCell(n, f, i, j);
+        if (i == 2 && j == 2) return 3;
+        return j == 5 ? 2 : (j < 5 ? 0 : 1);
+    });
+    ASSERT_LT(0.0005, vcg_ext::RegionBoundarySmoothing<TMesh>::kThinRegionWidth * 0.1020);
+    ASSERT_GT(0.05, vcg_ext::RegionBoundarySmoothing<TMesh>::kThinRegionWidth * 0.1020);
+    vcg_ext::RegionBoundarySmoothing<TMesh>::Params p;
+    auto r = vcg_ext::RegionBoundarySmoothing<TMesh>::Smooth(m, region, p);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.thinRegions, 1);
+    // Left: the loop around the cell and one curve between regions 0 (with the strip) and 1.
+    ASSERT_EQ(r.curves.size(), 2u);
+    std::set<std::pair<int, int>> pairs;
+    for (const auto &c : r.curves) pairs.insert({std::min(c.regionLeft, c.regionRight), std::max(c.regionLeft, c.regionRight)});
+    EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{{0, 1}, {0, 3}}));
 }
 
 TEST(MeshEdgeTopology, FacesWithARepeatedVertexAreLeftOut)

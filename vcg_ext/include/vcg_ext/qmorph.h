@@ -120,9 +120,10 @@ public:
         {
             if (!(targetEdgeLength > 0)) return "";
             return Format("Q-Morph re-meshing to edge length %g%s: %d front edges became %d (%d feature edges before), %d -> %d "
-                          "triangles; %d splits, %d collapses, %d flips, %d splits facing feature strips%s",
+                          "triangles; %d splits, %d collapses, %d flips, %d splits facing feature strips%s%s",
                           targetEdgeLength, automaticLength ? " (automatic)" : "", remesh.frontEdgesBefore, remesh.frontEdgesAfter, remesh.featureEdges,
                           remesh.facesBefore, remesh.facesAfter, remesh.splits, remesh.collapses, remesh.flips, remesh.facingSplits,
+                          remesh.needleCreases ? Format(", %d sharp edges of needles or turned faces not kept as creases", remesh.needleCreases).c_str() : "",
                           remesh.turnedBack ? Format(", %d faces turned back onto the input", remesh.turnedBack).c_str() : "");
         }
         std::string QualitySummary() const

@@ -31,6 +31,16 @@ public:
     typedef GeodesicStraightening<MeshType> Straightening;
     typedef vcg::Point3<double> Vec;
 
+    // Points of a boundary that runs along a crease (both of its edges there at least this sharp)
+    // stay where they are: on CAD parts a region boundary on a crease is the crease, and shortening
+    // would cut a curved one (block's circular rims) off into the facets beside it, leaving a strip
+    // a hair wide between the front and the crease, all needles.
+    static constexpr double kHeldCreaseDeg = 30;
+    // Regions narrower than this times MeanTriangleSide join their neighbour (MergeThinRegions):
+    // far below any quad size the pipeline makes (block: 35 regions, single slivers folded across a
+    // crease; the organic meshes: none or a few).
+    static constexpr double kThinRegionWidth = 0.05;
+
     struct Params {
         int iterations = 3;        // straightening passes (0: the raw boundary, chains of mesh edges)
         double snapPercent = 25;   // % of an edge's length: closer edge points snap to its vertex
@@ -60,6 +70,8 @@ public:
         std::vector<int> corners;          // corner vertices
         int regions = 0;                   // distinct region ids in the input
         int mergedRegions = 0;             // regions merged away (minRegionFaces)
+        int thinRegions = 0;               // regions merged away for being thinner than kThinRegionWidth
+        int heldCreasePoints = 0;          // boundary points held on a crease (kHeldCreaseDeg)
         int boundaryEdges = 0;
         int closedLoops = 0;
         int pointsBefore = 0, pointsAfter = 0;
@@ -152,18 +164,15 @@ private:
             r.error = "the face quality holds a single region id: there is no region boundary to smooth";
             return r;
         }
-        std::vector<int> merged;
-        const std::vector<int> *labels = &faceRegion;
-        if (p.minRegionFaces > 1) {
-            merged = MergeSmallRegions(r.topology, faceRegion, p.minRegionFaces, &r.mergedRegions);
-            labels = &merged;
-        }
+        std::vector<int> merged = MergeThinRegions(r.topology, faceRegion, kThinRegionWidth * MeanTriangleSide(r.topology), &r.thinRegions);
+        if (p.minRegionFaces > 1) merged = MergeSmallRegions(r.topology, merged, p.minRegionFaces, &r.mergedRegions);
+        const std::vector<int> *labels = &merged;
         if (cb) cb(10, "Region boundaries: curves and corners");
         Graph g = Graph::Build(r.topology, *labels);
         if (!g.error.empty()) { r.error = g.error; return r; }
         if (g.boundaryEdges == 0) {
             r.error = std::to_string(r.regions) + " regions but no boundary edge between two of them (" +
-                      (r.mergedRegions ? "small regions were merged away" : "each region is a whole connected component") +
+                      (r.mergedRegions || r.thinRegions ? "small or thin regions were merged away" : "each region is a whole connected component") +
                       "): nothing to smooth";
             return r;
         }
@@ -171,7 +180,10 @@ private:
         r.corners = g.corners;
         r.closedLoops = g.closedLoops;
         std::vector<SurfacePath> paths;
-        for (const BoundaryCurve &c : g.curves) paths.push_back(InitialPath(r.topology, c));
+        for (const BoundaryCurve &c : g.curves) {
+            paths.push_back(InitialPath(r.topology, c));
+            r.heldCreasePoints += HoldCreases(r.topology, c, paths.back());
+        }
         auto t2 = Clock::now();
         r.graphSeconds = std::chrono::duration<double>(t2 - t1).count();
 
@@ -230,6 +242,37 @@ private:
             }
         }
         return path;
+    }
+
+    // The side of the equilateral triangle of the mesh's mean face area: its resolution, whatever
+    // the shapes of its triangles.
+    static double MeanTriangleSide(const Topology &t)
+    {
+        double area = 0;
+        int faces = 0;
+        for (int f = 0; f < t.faceCount; ++f)
+            if (t.faceVerts[f][0] >= 0) {
+                area += t.DoubleArea(f) / 2;
+                ++faces;
+            }
+        const double equilateralArea = std::sqrt(3.0) / 4;
+        return faces ? std::sqrt(area / (faces * equilateralArea)) : 0;
+    }
+
+    // Fixes the points of path (read from c) whose two edges are creases; returns how many.
+    static int HoldCreases(const Topology &t, const BoundaryCurve &c, SurfacePath &path)
+    {
+        const int n = int(c.vertices.size()), edges = int(c.edges.size());
+        int held = 0;
+        for (int i = 0; i < n; ++i) {
+            const int before = c.closed ? (i + edges - 1) % edges : i - 1;
+            if (before < 0 || i >= edges || path.fixed[i]) continue;
+            if (t.DihedralDeg(c.edges[before]) >= kHeldCreaseDeg && t.DihedralDeg(c.edges[i]) >= kHeldCreaseDeg) {
+                path.fixed[i] = 1;
+                ++held;
+            }
+        }
+        return held;
     }
 
     static void Measure(const Topology &t, const std::vector<SurfacePath> &paths, int &points, double &length, double &jaggedness)

@@ -3,8 +3,8 @@
 //   RegionBoundaryGraph boundary edges (a manifold edge whose two faces have different ids),
 //                      corners and curves: maximal chains of boundary edges between corners, each
 //                      separating one pair of regions; chains without corners are closed loops.
-//   MergeSmallRegions  optional clean-up: regions below a face count join the neighbour they share
-//                      the longest boundary with (on a copy of the labels).
+//   MergeRegions       clean-up: regions below a face count (optional) or a width join the
+//                      neighbour they share the longest boundary with (on a copy of the labels).
 // Used by the boundary smoothing (filter 2).
 #ifndef VCG_EXT_BOUNDARY_REGION_BOUNDARY_H
 #define VCG_EXT_BOUNDARY_REGION_BOUNDARY_H
@@ -176,43 +176,65 @@ private:
     }
 };
 
-// Regions with fewer than `minFaces` faces join the edge-adjacent region they share the longest
-// boundary with, smallest first, repeated until none is left (or it has no neighbour). Returns
-// the new labels (ids of surviving regions unchanged) and the number of regions merged away.
-template <class MeshType>
-std::vector<int> MergeSmallRegions(const MeshEdgeTopology<MeshType> &t, const std::vector<int> &faceRegion, int minFaces,
-                                   int *mergedCount = nullptr)
+// Region sizes for the clean-ups below.
+struct RegionSize {
+    int faces = 0;
+    double area = 0;
+    double boundaryLength = 0;  // edges shared with other regions
+};
+
+// Regions that `merge(size)` picks join the edge-adjacent region they share the longest boundary
+// with, smallest first (by faces), repeated until none is left (or it has no neighbour); a region
+// that receives another one in a round waits for the next. Returns the new labels (ids of
+// surviving regions unchanged) and the number of regions merged away.
+template <class MeshType, class Pick>
+std::vector<int> MergeRegions(const MeshEdgeTopology<MeshType> &t, const std::vector<int> &faceRegion, Pick merge,
+                              int *mergedCount = nullptr)
 {
     std::vector<int> label = faceRegion;
     int merged = 0;
-    for (int round = 0; round < 64 && minFaces > 1; ++round) {
-        std::unordered_map<int, int> size;
+    for (int round = 0; round < 64; ++round) {
+        std::unordered_map<int, RegionSize> size;
         for (int f = 0; f < t.faceCount; ++f)
-            if (t.faceVerts[f][0] >= 0) ++size[label[f]];
-        // Longest shared boundary per (small region, neighbour).
-        std::unordered_map<uint64_t, double> shared;
+            if (t.faceVerts[f][0] >= 0) {
+                RegionSize &r = size[label[f]];
+                ++r.faces;
+                r.area += t.DoubleArea(f) / 2;
+            }
+        std::vector<double> edgeLength(t.EdgeCount(), -1);
         for (int e = 0; e < t.EdgeCount(); ++e) {
             if (!t.IsManifoldEdge(e)) continue;
-            int h = t.edgeHalf[e];
-            int a = label[h / 3], b = label[t.twin[h] / 3];
+            const int h = t.edgeHalf[e], a = label[h / 3], b = label[t.twin[h] / 3];
             if (a == b) continue;
-            double len = t.EdgeLength(e);
-            if (size[a] < minFaces) shared[DirectedKey(a, b)] += len;
-            if (size[b] < minFaces) shared[DirectedKey(b, a)] += len;
+            edgeLength[e] = t.EdgeLength(e);
+            size[a].boundaryLength += edgeLength[e];
+            size[b].boundaryLength += edgeLength[e];
         }
-        std::unordered_map<int, std::pair<int, double>> best;  // small region -> (neighbour, length)
-        for (auto &s : shared) {
-            int a = int(uint32_t(s.first >> 32)), b = int(uint32_t(s.first));
+        std::unordered_map<int, char> picked;
+        for (const auto &r : size)
+            if (merge(r.second)) picked[r.first] = 1;
+        if (picked.empty()) break;
+        // Longest shared boundary per (picked region, neighbour).
+        std::unordered_map<uint64_t, double> shared;
+        for (int e = 0; e < t.EdgeCount(); ++e) {
+            if (edgeLength[e] < 0) continue;
+            const int h = t.edgeHalf[e], a = label[h / 3], b = label[t.twin[h] / 3];
+            if (picked.count(a)) shared[DirectedKey(a, b)] += edgeLength[e];
+            if (picked.count(b)) shared[DirectedKey(b, a)] += edgeLength[e];
+        }
+        std::unordered_map<int, std::pair<int, double>> best;  // picked region -> (neighbour, length)
+        for (auto &sh : shared) {
+            int a = int(uint32_t(sh.first >> 32)), b = int(uint32_t(sh.first));
             auto it = best.find(a);
-            if (it == best.end() || s.second > it->second.second ||
-                (s.second == it->second.second && b < it->second.first))
-                best[a] = {b, s.second};
+            if (it == best.end() || sh.second > it->second.second ||
+                (sh.second == it->second.second && b < it->second.first))
+                best[a] = {b, sh.second};
         }
         if (best.empty()) break;
-        // Smallest first; a region that receives another one this round is not merged itself.
         std::vector<int> small;
         for (auto &b : best) small.push_back(b.first);
-        std::sort(small.begin(), small.end(), [&](int a, int b) { return size[a] != size[b] ? size[a] < size[b] : a < b; });
+        std::sort(small.begin(), small.end(),
+                  [&](int a, int b) { return size[a].faces != size[b].faces ? size[a].faces < size[b].faces : a < b; });
         std::unordered_map<int, int> target;
         std::unordered_map<int, char> receives;
         for (int r : small) {
@@ -230,6 +252,27 @@ std::vector<int> MergeSmallRegions(const MeshEdgeTopology<MeshType> &t, const st
     }
     if (mergedCount) *mergedCount = merged;
     return label;
+}
+
+// Regions with fewer than `minFaces` faces join their neighbour (MergeRegions).
+template <class MeshType>
+std::vector<int> MergeSmallRegions(const MeshEdgeTopology<MeshType> &t, const std::vector<int> &faceRegion, int minFaces,
+                                   int *mergedCount = nullptr)
+{
+    return MergeRegions(t, faceRegion, [minFaces](const RegionSize &r) { return r.faces < minFaces; }, mergedCount);
+}
+
+// Regions narrower than `minWidth` join their neighbour (MergeRegions). A region's width is twice
+// its area over its boundary length (a strip's width; a disc's radius): CAD tessellations have
+// slivers folded across a crease whose normal makes them regions of their own, a few thousandths
+// of an edge wide, and their boundaries would become front curves a hair apart.
+template <class MeshType>
+std::vector<int> MergeThinRegions(const MeshEdgeTopology<MeshType> &t, const std::vector<int> &faceRegion, double minWidth,
+                                  int *mergedCount = nullptr)
+{
+    return MergeRegions(
+        t, faceRegion, [minWidth](const RegionSize &r) { return r.boundaryLength > 0 && 2 * r.area < minWidth * r.boundaryLength; },
+        mergedCount);
 }
 
 }  // namespace vcg_ext

@@ -62,6 +62,7 @@ public:
         int featureEdges = 0, frontEdgesBefore = 0, frontEdgesAfter = 0;
         int splits = 0, collapses = 0, flips = 0, facingSplits = 0;
         int turnedBack = 0;  // faces found turned away from the input at the end, and mended
+        int needleCreases = 0;  // sharp edges of needles and turned faces, not kept (Unreliable)
         int facesBefore = 0, facesAfter = 0;
     };
 
@@ -84,7 +85,7 @@ public:
         if (cb) cb(0, "Q-Morph: re-meshing, features");
         SegmentGrid features(L);
         std::vector<char> isFront;
-        MarkFeatures(m, creaseAngleDeg, features, isFront, st);
+        MarkFeatures(m, creaseAngleDeg, features, isFront, st, L);
         auto isFrontEdge = [&](const P3 &a, const P3 &b) { return OnFront(features, isFront, a, b); };
         auto toFeatures = [&](const P3 &a, const P3 &b) { return CurveDeviation(features, a, b, L); };
 
@@ -332,8 +333,31 @@ private:
         return ((Pos(f.cV(1)) - Pos(f.cV(0))) ^ (Pos(f.cV(2)) - Pos(f.cV(0)))).Normalize();
     }
 
-    // Selected face-edges and sharp creases: both sides flagged, each entered in the grid.
-    static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<char> &isFront, Stats &st)
+    // A face lower than this times L (its height on its longest edge) is a needle.
+    static constexpr double kNeedleHeight = 0.05;
+    // A face whose normal is farther than this from each of its neighbours' is turned over.
+    static constexpr double kTurnedCos = -0.5;  // 120 degrees
+
+    // Whether f's normal is noise at the scale of the output: a needle, or a face turned over
+    // against all of its neighbours (a fold of the tessellation, no surface has one). A sharp edge
+    // such a face makes is no crease: CAD tessellations have them along their creases (block:
+    // needles and caps folded 150-180 degrees from their neighbours), and kept as creases their
+    // edges fenced in needles that no quad could take.
+    static bool Unreliable(const FaceType &f, double L)
+    {
+        double longest = 0;
+        for (int k = 0; k < 3; ++k) longest = std::max(longest, (Pos(f.cV1(k)) - Pos(f.cV(k))).Norm());
+        const double doubleArea = ((Pos(f.cV(1)) - Pos(f.cV(0))) ^ (Pos(f.cV(2)) - Pos(f.cV(0)))).Norm();
+        if (doubleArea < kNeedleHeight * L * longest) return true;
+        const P3 n = UnitNormal(f);
+        for (int k = 0; k < 3; ++k)
+            if (f.cFFp(k) == &f || n * UnitNormal(*f.cFFp(k)) > kTurnedCos) return false;
+        return true;
+    }
+
+    // Selected face-edges and sharp creases (but an unreliable face's): both sides flagged, each entered in
+    // the grid.
+    static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<char> &isFront, Stats &st, double L)
     {
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
@@ -342,7 +366,11 @@ private:
                 FaceType *g = f.FFp(i);
                 if (g < &f) continue;  // once per edge (a border edge has g == &f)
                 const bool selected = IsFeature(f, i);
-                const bool crease = g != &f && creaseAngleDeg < 180 && UnitNormal(f) * UnitNormal(*g) < creaseCos;
+                bool crease = g != &f && creaseAngleDeg < 180 && UnitNormal(f) * UnitNormal(*g) < creaseCos;
+                if (crease && (Unreliable(f, L) || Unreliable(*g, L))) {
+                    crease = false;
+                    ++st.needleCreases;
+                }
                 if (!selected && !crease && g != &f) continue;
                 f.SetFaceEdgeS(i);
                 g->SetFaceEdgeS(f.FFi(i));
