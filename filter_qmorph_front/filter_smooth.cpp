@@ -10,7 +10,7 @@ typedef vcg_ext::RegionBoundarySmoothing<CMeshO> Smoothing;
 QString QMorphFrontPlugin::smoothInfo()
 {
     return "Step 2 of the closed-mesh-to-quads pipeline: finds the curves between regions and straightens them "
-           "geodesically on the surface (corners fixed, no curve crossing another, points on a crease of 30 degrees or "
+           "geodesically on the surface (corners fixed, no curve crossing another, points on a crease of 45 degrees or "
            "more held there), then moves points near a vertex onto it. Regions thinner than 5% of the mean triangle "
            "side (slivers of a CAD tessellation) join a neighbour first. Reads the region ids from the <b>face quality</b> (integral values, e.g. from <i>Segment by "
            "Variational Shape Approximation</i>) and leaves the mesh unchanged; writes the curves to a new edge-only "
