@@ -259,25 +259,34 @@ TEST(MergeSmallRegions, TinyRegionJoinsTheNeighbourWithTheLongestSharedBoundary)
     EXPECT_EQ(merged, 0);
 }
 
-TEST(MergeThinRegions, AStripAHairWideJoinsANeighbourAndASmallFatRegionStays)
+namespace {
+
+// A 10 x 10 grid of the unit square whose row of cells j = 5 is squeezed to 0.0005 high: that row
+// is region 2, a strip of width 2 * area / boundary = 2 * 0.0005 / 2 = 0.0005 (its ends are on the
+// grid's border, not shared). Below it region 0, above region 1, and one cell (0.1 x 0.1, width
+// 2 * 0.01 / 0.4 = 0.05) is region 3.
+std::vector<int> MakeSqueezedStrip(TMesh &m)
 {
-    // A 10 x 10 grid whose row of cells j = 5 is squeezed to 0.0005 high: that row is region 2, a
-    // strip of width 2 * area / boundary = 2 * 0.0005 / 2 = 0.0005 (its ends are on the grid's
-    // border, not shared). Below it region 0, above region 1, and one cell (0.1 x 0.1, width
-    // 2 * 0.01 / 0.4 = 0.05) is region 3.
     const int n = 10;
-    TMesh m;
     MakeGrid(m, n, 1.f, 0.f, 1, true);
     for (auto &v : m.vert) {
         const int row = int(std::lround(v.P()[1] * n));
         v.P()[1] = row <= 5 ? float(row) / n : float(row - 1) / n + 0.0005f;
     }
-    auto region = SetRegions(m, [&](int f) {
+    return SetRegions(m, [&](int f) {
         int i, j;
         GridCell(n, f, i, j);
         if (i == 2 && j == 2) return 3;
         return j == 5 ? 2 : (j < 5 ? 0 : 1);
     });
+}
+
+}  // namespace
+
+TEST(MergeThinRegions, AStripAHairWideJoinsANeighbourAndASmallFatRegionStays)
+{
+    TMesh m;
+    const std::vector<int> region = MakeSqueezedStrip(m);
     Topo t;
     t.Build(m);
     int merged = -1;
@@ -295,22 +304,11 @@ TEST(MergeThinRegions, AStripAHairWideJoinsANeighbourAndASmallFatRegionStays)
 
 TEST(MergeThinRegions, TheSmoothingMergesStripsThinnerThanItsShareOfTheMeanTriangleSide)
 {
-    // The same squeezed grid through the whole filter: the mean triangle side is
+    // MakeSqueezedStrip through the whole filter: the mean triangle side is
     // sqrt(area / (faces * sqrt(3) / 4)) = sqrt(0.9005 / (200 * 0.4330)) = 0.1020, so strips below
     // 0.05 * 0.1020 = 0.0051 go; the 0.0005 strip does, the cell (0.05) stays.
-    const int n = 10;
     TMesh m;
-    MakeGrid(m, n, 1.f, 0.f, 1, true);
-    for (auto &v : m.vert) {
-        const int row = int(std::lround(v.P()[1] * n));
-        v.P()[1] = row <= 5 ? float(row) / n : float(row - 1) / n + 0.0005f;
-    }
-    auto region = SetRegions(m, [&](int f) {
-        int i, j;
-        GridCell(n, f, i, j);
-        if (i == 2 && j == 2) return 3;
-        return j == 5 ? 2 : (j < 5 ? 0 : 1);
-    });
+    const std::vector<int> region = MakeSqueezedStrip(m);
     ASSERT_LT(0.0005, vcg_ext::RegionBoundarySmoothing<TMesh>::kThinRegionWidth * 0.1020);
     ASSERT_GT(0.05, vcg_ext::RegionBoundarySmoothing<TMesh>::kThinRegionWidth * 0.1020);
     vcg_ext::RegionBoundarySmoothing<TMesh>::Params p;
