@@ -185,7 +185,7 @@ public:
         for (const VertexType &v : m.vert)
             if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
         const double triangles = std::min<double>(std::max(1, m.fn), kMaxAutoTriangles);
-        const double density = std::sqrt(SurfaceArea(m) / (kEquilateralArea * triangles));
+        const double density = EquilateralSide(SurfaceArea(m), triangles);
         return std::min(density, kMaxAutoDiagonalFraction * box.Diag());
     }
 
@@ -237,7 +237,6 @@ public:
     }
 
 private:
-    static constexpr double kEquilateralArea = 0.43301270189221932;  // sqrt(3) / 4, unit side
     static constexpr double kMaxAutoTriangles = 250000;
     static constexpr double kMaxAutoDiagonalFraction = 0.01;
     // The re-meshing's share of the progress bar (about half of the stage's time on big scans).

@@ -17,6 +17,7 @@
 #include <vcg_ext/boundary/region_boundary.h>
 #include <vcg_ext/boundary/straightening.h>
 #include <vcg_ext/common/edge_layer.h>
+#include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
 
@@ -247,8 +248,7 @@ private:
         return path;
     }
 
-    // The side of the equilateral triangle of the mesh's mean face area: its resolution, whatever
-    // the shapes of its triangles.
+    // The side of the equilateral triangle of the mesh's mean face area (EquilateralSide).
     static double MeanTriangleSide(const Topology &t)
     {
         double area = 0;
@@ -258,8 +258,7 @@ private:
                 area += t.DoubleArea(f) / 2;
                 ++faces;
             }
-        const double equilateralArea = std::sqrt(3.0) / 4;
-        return faces ? std::sqrt(area / (faces * equilateralArea)) : 0;
+        return faces ? EquilateralSide(area, faces) : 0;
     }
 
     // Fixes the points of path (read from c) whose two edges are creases; returns how many.

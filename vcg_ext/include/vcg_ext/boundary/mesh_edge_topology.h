@@ -15,6 +15,7 @@
 
 #include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
+#include <vcg_ext/common/polygon_geometry.h>
 
 namespace vcg_ext {
 
@@ -165,29 +166,22 @@ public:
 
     Vec Position(int v) const { return Vec::Construct(mesh->vert[v].cP()); }
     double EdgeLength(int e) const { return (Position(edgeVerts[e][1]) - Position(edgeVerts[e][0])).Norm(); }
-    // Twice the area of face f (0 for a deleted or ignored face).
-    double DoubleArea(int f) const
+    // Face f's cross product (p1 - p0) x (p2 - p0): twice its area times its normal (zero for a
+    // deleted or ignored face).
+    Vec Cross(int f) const
     {
         const std::array<int, 3> &v = faceVerts[f];
-        if (v[0] < 0) return 0;
-        return ((Position(v[1]) - Position(v[0])) ^ (Position(v[2]) - Position(v[0]))).Norm();
+        if (v[0] < 0) return Vec(0, 0, 0);
+        return (Position(v[1]) - Position(v[0])) ^ (Position(v[2]) - Position(v[0]));
     }
+    double DoubleArea(int f) const { return Cross(f).Norm(); }
     // The angle between the normals of a manifold edge's two faces, in degrees (0 elsewhere, and
     // where a face has no normal).
     double DihedralDeg(int e) const
     {
         if (edgeKind[e] != Manifold) return 0;
         const int h = edgeHalf[e];
-        const Vec a = UnitNormal(h / 3), b = UnitNormal(twin[h] / 3);
-        if (a.SquaredNorm() == 0 || b.SquaredNorm() == 0) return 0;
-        return std::acos(std::max(-1.0, std::min(1.0, a * b))) * 180 / M_PI;
-    }
-    Vec UnitNormal(int f) const
-    {
-        const std::array<int, 3> &v = faceVerts[f];
-        const Vec n = (Position(v[1]) - Position(v[0])) ^ (Position(v[2]) - Position(v[0]));
-        const double l = n.Norm();
-        return l > 0 ? n / l : Vec(0, 0, 0);
+        return AngleBetween(Cross(h / 3), Cross(twin[h] / 3)) * 180 / M_PI;
     }
 
     // The ordered fan around v; false when v is not a manifold vertex with a single fan of

@@ -193,13 +193,15 @@ std::vector<int> MergeRegions(const MeshEdgeTopology<MeshType> &t, const std::ve
 {
     std::vector<int> label = faceRegion;
     int merged = 0;
+    std::vector<double> faceArea(t.faceCount);  // the same every round
+    for (int f = 0; f < t.faceCount; ++f) faceArea[f] = t.DoubleArea(f) / 2;
     for (int round = 0; round < 64; ++round) {
         std::unordered_map<int, RegionSize> size;
         for (int f = 0; f < t.faceCount; ++f)
             if (t.faceVerts[f][0] >= 0) {
                 RegionSize &r = size[label[f]];
                 ++r.faces;
-                r.area += t.DoubleArea(f) / 2;
+                r.area += faceArea[f];
             }
         std::vector<double> edgeLength(t.EdgeCount(), -1);
         for (int e = 0; e < t.EdgeCount(); ++e) {

@@ -1,6 +1,7 @@
 // The geometry of one polygon (3 or 4 corners, counter-clockwise), one implementation for every
-// module: its vector area (normal times area, right for non-planar quads too), the angle between
-// two vectors, the scaled Jacobian of a quad, and the closest point of a triangle.
+// module: its vector area (normal times area, right for non-planar quads too), the side of an
+// equilateral tiling, the angle between two vectors, the scaled Jacobian of a quad, and the
+// closest point of a triangle.
 #ifndef VCG_EXT_COMMON_POLYGON_GEOMETRY_H
 #define VCG_EXT_COMMON_POLYGON_GEOMETRY_H
 
@@ -22,6 +23,13 @@ inline Vec3d VectorArea(const Vec3d *p, int n)
     for (int k = 1; k + 1 < n; ++k) a += (p[k] - p[0]) ^ (p[k + 1] - p[0]);
     return a * 0.5;
 }
+
+// Area of the equilateral triangle of unit side (sqrt(3) / 4).
+constexpr double kEquilateralArea = 0.43301270189221932;
+
+// The side of `triangles` equilateral triangles that tile `area`: a mesh's resolution whatever the
+// shapes of its triangles.
+inline double EquilateralSide(double area, double triangles) { return std::sqrt(area / (kEquilateralArea * triangles)); }
 
 // Angle between two vectors in [0, pi]; 0 when one of them is zero.
 inline double AngleBetween(const Vec3d &u, const Vec3d &v)
