@@ -19,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include <vcg_ext/common/progress_period.h>
+
 namespace vcg_ext {
 
 // Threads to use: `requested` when > 0, else the machine's cores (at least 1).
@@ -28,15 +30,11 @@ inline int ThreadCount(int requested)
     return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-// The calling thread wakes at least this often to merge and call `tick` (progress gaps stay
-// well under the 2 s MeshLab users notice, however long one item runs).
-constexpr double kParallelTickSeconds = 0.25;
-
 // Runs `work(i)` (returning a Result) for every i in [0, count) on `threads` threads, starting
 // the items in `startOrder` (a permutation of [0, count); empty: index order; e.g. biggest first,
 // so one large item does not start last), and calls `merge(i, Result &&)` on the calling thread
 // for i = 0, 1, ... in this order as soon as item i and all before it are done; `tick()` is called
-// on the calling thread after each merge and at least every kParallelTickSeconds. `work` must be
+// on the calling thread after each merge and at least every kProgressPeriodSeconds. `work` must be
 // safe to run concurrently for different i. An exception thrown by `work` is rethrown here after
 // the threads have stopped.
 template <class Result, class Work, class Merge, class Tick>
@@ -85,7 +83,7 @@ void OrderedParallelFor(size_t count, int threads, const std::vector<size_t> &st
     std::vector<std::thread> pool;
     for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
 
-    const auto tickPeriod = std::chrono::duration<double>(kParallelTickSeconds);
+    const auto tickPeriod = std::chrono::duration<double>(kProgressPeriodSeconds);
     size_t merged = 0;
     try {
         std::unique_lock<std::mutex> lock(mutex);

@@ -1,6 +1,6 @@
 // Progress that never freezes: a filter's work runs on a worker thread while the thread that called
 // it relays the work's progress to MeshLab's callback, each new report as it comes and the last one
-// again at least every kHeartbeatSeconds. Some steps are one indivisible whole-mesh call (vcglib's
+// again at least every kProgressPeriodSeconds. Some steps are one indivisible whole-mesh call (vcglib's
 // topology and grid builds take seconds at millions of faces); during them the GUI still processes
 // events and shows the step under way instead of a frozen bar.
 //
@@ -23,14 +23,13 @@
 
 #include <wrap/callback.h>
 
+#include <vcg_ext/common/progress_period.h>
+
 namespace vcg_ext {
 
 class ProgressRelay
 {
 public:
-    // The calling thread repeats the last report at least this often.
-    static constexpr double kHeartbeatSeconds = 0.25;
-
     // Returns work(report): run on a worker thread when cb is set (report relays to cb), inline
     // with cb itself otherwise or when already on a relay's worker. An exception thrown by the
     // work is rethrown here.
@@ -90,7 +89,7 @@ private:
     // after every heartbeat without one; cb is called with the lock released.
     void Forward(vcg::CallBackPos *cb)
     {
-        const auto heartbeat = std::chrono::duration<double>(kHeartbeatSeconds);
+        const auto heartbeat = std::chrono::duration<double>(kProgressPeriodSeconds);
         std::unique_lock<std::mutex> lock(mutex);
         for (;;) {
             changed.wait_for(lock, heartbeat, [&]() { return fresh || finished; });
