@@ -37,6 +37,7 @@
 #include <vcg_ext/qmorph/all_quads.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/qmorph/flipped_face_mend.h>
+#include <vcg_ext/qmorph/front_node_plan.h>
 #include <vcg_ext/qmorph/worst_element_smoothing.h>
 #include <vcg_ext/qmorph/partition.h>
 #include <vcg_ext/qmorph/patch_mesher.h>
@@ -75,6 +76,8 @@ public:
                                            // (qmorph/all_quads.h), after re-meshing at twice a length given
                                            // (at the automatic length itself: see RemeshLength)
         int threads = 0;                   // patches meshed at once: 0 = the machine's cores (same output)
+        bool planFrontNodes = true;        // side edges at initial-front nodes planned over all their
+                                           // patches (qmorph/front_node_plan.h); off: each patch decides
 
         std::string Validate() const
         {
@@ -262,6 +265,7 @@ private:
         Progress(cb, patchesFrom, "Q-Morph: patches, partition");
         qmorph::FrontPartition part;
         part.Build(m, par.creaseAngleDeg);
+        if (par.planFrontNodes) part.plannedSides = qmorph::FrontNodePlan::Plan(m, part);
         res.initialFrontEdges = part.frontEdges;
         res.creaseEdges = part.creaseEdges;
         const qmorph::PatchParams pp = PatchParamsOf(par);
@@ -293,6 +297,7 @@ private:
                 r.hasFront = in.hasFront;
                 qmorph::MixedMesh mm;
                 mm.Build(in.points, in.tris, in.cut);
+                mm.plannedSides = in.plannedSides;
                 // The input judges: under a re-meshed patch the patch's own surface is not the input,
                 // and on the input itself a walk over the patch can end on the far side of a tight bend.
                 const double side = in.reversed ? -1 : 1;  // the patch is read the other way round

@@ -75,6 +75,23 @@ public:
     // (a re-meshed patch), the judge rates them (see CanFlip).
     bool patchIsInput = false;
 
+    // Per node: the interior edges planned at an initial-front node (FrontNodePlan); -1, or a node
+    // beyond the vector (made later): none.
+    std::vector<int> plannedSides;
+    int PlannedSides(int v) const { return v < int(plannedSides.size()) ? plannedSides[v] : -1; }
+    // The planned edges v still lacks (those that bound a quad already count), or -1 without a plan.
+    int PlannedSidesLeft(int v) const
+    {
+        const int planned = PlannedSides(v);
+        if (planned < 0) return -1;
+        int made = 0;
+        ForEachOutgoing(v, [&](int h) {
+            const int t = heTwin[h];
+            if (!heInitial[h] && (IsQuad(heFace[h]) || (t >= 0 && heFace[t] >= 0 && IsQuad(heFace[t])))) ++made;
+        });
+        return std::max(0, planned - made);
+    }
+
     int VertexCount() const { return int(pos.size()); }
     int HalfEdgeCount() const { return int(heVert.size()); }
     int FaceCount() const { return int(faceHe.size()); }

@@ -40,6 +40,7 @@ struct PatchInput {
     std::vector<std::array<int, 3>> tris;   // counter-clockwise, local nodes
     std::vector<char> cut;                  // per local half-edge 3t+k: on the front
     std::vector<int> home;                  // per local node: a triangle holding it (for projection)
+    std::vector<int> plannedSides;          // per local node: interior edges planned there (FrontNodePlan), -1: none
     float quality = 0;                      // the region id covering most of the patch's area
     bool hasFront = false;
     bool reversed = false;                  // the input's faces are the other way round (write back mirrored)
@@ -56,6 +57,8 @@ struct FrontPartition {
     std::vector<int> sectorOf;                   // per corner 3f+k: its node sector (lowest corner)
     std::vector<int> order;                      // live faces grouped by patch, in face order within
     std::vector<std::vector<int>> patchesOfVertex;  // per input vertex: the patches holding it, sorted
+    std::vector<char> openVertex;                // per input vertex: on a border or non-manifold edge
+    std::vector<int> plannedSides;               // per sector: interior edges planned there, -1: none (empty: no plan)
     std::unordered_set<uint64_t> selectedPairs;  // selected input edges (vertex pairs): selected again at the end
     int frontEdges = 0;                          // distinct edges on the initial front
     int creaseEdges = 0;                         // of which sharp creases that were not selected
@@ -78,8 +81,10 @@ struct FrontPartition {
         std::vector<int> twin(3 * F, -1);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
         const EdgePairing::Groups edges = EdgePairing::Group(tri);
+        openVertex.assign(m.vert.size(), 0);
         for (int e = 0; e < edges.Count(); ++e) {
             const int n = edges.Size(e), *h = edges.Begin(e);
+            if (n != 2) openVertex[EdgePairing::From(tri, h[0])] = openVertex[EdgePairing::To(tri, h[0])] = 1;
             bool selected = false;
             for (int k = 0; k < n; ++k) selected = selected || m.face[faceIdx[h[k] / 3]].IsFaceEdgeS(inputEdge[h[k]]);
             if (selected) selectedPairs.insert(EdgeKey(EdgePairing::From(tri, h[0]), EdgePairing::To(tri, h[0])));
@@ -150,6 +155,7 @@ struct FrontPartition {
                     in.points.push_back(P3::Construct(m.vert[tri[f][k]].cP()));
                     in.globalOf.push_back(tri[f][k]);
                     in.home.push_back(int(in.tris.size()));
+                    in.plannedSides.push_back(plannedSides.empty() ? -1 : plannedSides[sec]);
                 }
                 t[k] = localOfSector[sec];
                 in.cut.push_back(cut[3 * f + k]);

@@ -138,6 +138,10 @@ protected:
         std::vector<int> ideal(m.VertexCount(), 4);
         for (int v = 0; v < m.VertexCount(); ++v) {
             if (!m.vertAlive[v] || !m.OnBoundary(v)) continue;
+            if (m.PlannedSides(v) >= 0) {  // the node's two front edges and its planned side edges
+                ideal[v] = m.PlannedSides(v) + 2;
+                continue;
+            }
             double angle = 0;
             m.ForEachOutgoing(v, [&](int g) { angle += m.CornerAngle(g); });
             ideal[v] = std::max(1, int(std::lround(angle / (M_PI / 2)))) + 1;
