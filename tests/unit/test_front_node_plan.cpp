@@ -123,6 +123,9 @@ TEST(FrontNodePlan, FewerIrregularFrontNodesOnAScanWithoutPoorerQuads)
         EXPECT_TRUE(r.error.empty()) << r.error;
         EXPECT_EQ(r.quality.flippedFaces, 0);
         frontNodes = FrontNodes(m);
+        // the core's own report counts the same front nodes
+        EXPECT_TRUE(r.quality.frontKnown);
+        EXPECT_EQ(r.quality.irregularAtFrontNodes, frontNodes.second);
         return r;
     };
     std::pair<int, int> withPlan, without;

@@ -217,8 +217,15 @@ TEST(QMorph, CubeWithItsTwelveEdgesSelectedGivesSixQuadPatches)
     EXPECT_EQ(r.triangles, 0);
     EXPECT_EQ(r.quads, 6 * 36);
     EXPECT_NEAR(Volume(m), volume, 1e-4 * volume) << "flat sides, fixed edges: the volume is exact";
-    // the 8 corners are the only irregular vertices (valence 3)
+    // the 8 corners are the only irregular vertices (valence 3), each where three front edges meet
     EXPECT_EQ(r.quality.irregularVertices, 8);
+    EXPECT_TRUE(r.quality.frontKnown);
+    EXPECT_EQ(r.quality.irregularAtFrontJunctions, 8);
+    EXPECT_EQ(r.quality.irregularAtFrontNodes, 0);
+    EXPECT_EQ(r.quality.IrregularInsidePatches(), 0);
+    EXPECT_NE(r.QualitySummary().find("irregular vertices 8 of 218 (3.7%): 0 inside patches, 0 at front nodes, 8 at front junctions"),
+              std::string::npos)
+        << r.QualitySummary();
 }
 
 TEST(QMorph, PatchesWithoutInteriorStayTrianglesOrBecomeSingleQuads)

@@ -120,6 +120,9 @@ inline std::vector<Row> QuadRows(const QuadFigures &f)
         {"folded quads (bent over 60 degrees along both diagonals)", Int(q.foldedQuads)},
         {"irregular vertices (valence != 4, inner all-quad vertices)",
          Int(q.irregularVertices) + " of " + Int(q.interiorAllQuadVertices) + " (" + Pct(q.IrregularFraction()) + ")"},
+        {"... inside patches / at front nodes (two front edges) / at front junctions",
+         q.frontKnown ? Int(q.IrregularInsidePatches()) + " / " + Int(q.irregularAtFrontNodes) + " / " + Int(q.irregularAtFrontJunctions)
+                      : std::string("front unknown")},
         {"front edges kept (output edges, still selected)",
          Int(f.frontKept) + " of " + Int(f.frontEdges) + " (" + Int(f.frontStillSelected) + " selected)"},
         {"closed 2-manifold, oriented",

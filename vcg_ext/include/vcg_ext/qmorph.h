@@ -137,6 +137,9 @@ public:
                           "vertices %d of %d (%.1f%%)",
                           q.minJacobian, q.meanJacobian, q.p5Jacobian, q.quadsBelow03, q.invertedQuads, q.flippedFaces,
                           q.foldedQuads, q.irregularVertices, q.interiorAllQuadVertices, 100 * q.IrregularFraction()) +
+                   (q.frontKnown ? Format(": %d inside patches, %d at front nodes, %d at front junctions", q.IrregularInsidePatches(),
+                                          q.irregularAtFrontNodes, q.irregularAtFrontJunctions)
+                                 : std::string()) +
                    (shape.moves ? Format("; worst elements raised: %d corners moved, elements below 0.3 %d -> %d", shape.moves,
                                          shape.poorBefore, shape.poorAfter)
                                 : std::string()) +

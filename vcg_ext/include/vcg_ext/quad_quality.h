@@ -20,6 +20,7 @@ namespace vcg_ext {
 struct PolygonMesh {
     std::vector<vcg::Point3<double>> points;
     std::vector<std::vector<int>> faces;  // counter-clockwise, 3 or 4 nodes
+    std::vector<uint64_t> frontEdges;     // EdgeKey of the point pairs on the front, sorted (empty: unknown)
 };
 
 // Scaled Jacobians are measured against the input surface's normal under each face when it is
@@ -33,6 +34,11 @@ struct QuadQualityReport {
     int flippedFaces = 0;       // faces whose vector area points away from the input surface
     int foldedQuads = 0;        // quads folded across both diagonals (kFoldAngleDeg)
     int interiorAllQuadVertices = 0, irregularVertices = 0;  // see IrregularFraction
+    // Where the irregular vertices are, when the front is known (PolygonMesh::frontEdges): at front
+    // nodes (two front edges), at front junctions (one, or three and more); the rest inside patches.
+    bool frontKnown = false;
+    int irregularAtFrontNodes = 0, irregularAtFrontJunctions = 0;
+    int IrregularInsidePatches() const { return irregularVertices - irregularAtFrontNodes - irregularAtFrontJunctions; }
     double IrregularFraction() const { return interiorAllQuadVertices ? double(irregularVertices) / interiorAllQuadVertices : 0; }
 };
 
@@ -106,10 +112,19 @@ public:
             if (j - i == 1) onBoundary[u] = onBoundary[w] = 1;
             i = j;
         }
+        std::vector<int> frontEdgesAt(pm.points.size(), 0);
+        for (uint64_t e : pm.frontEdges) {
+            frontEdgesAt[e >> 32]++;
+            frontEdgesAt[e & 0xffffffffu]++;
+        }
+        r.frontKnown = !pm.frontEdges.empty();
         for (size_t v = 0; v < pm.points.size(); ++v) {
             if (faceCount[v] == 0 || onBoundary[v] || touchesTriangle[v]) continue;
             ++r.interiorAllQuadVertices;
-            r.irregularVertices += valence[v] != 4;
+            if (valence[v] == 4) continue;
+            ++r.irregularVertices;
+            r.irregularAtFrontNodes += frontEdgesAt[v] == 2;
+            r.irregularAtFrontJunctions += frontEdgesAt[v] != 0 && frontEdgesAt[v] != 2;
         }
         int n = int(pm.faces.size());
         r.quadCountFraction = n ? double(r.quads) / n : 0;
@@ -173,6 +188,13 @@ public:
             for (int k = 0; k < n; ++k) face.push_back(vid[corners[k]]);
             pm.faces.push_back(face);
         });
+        for (const auto &f : m.face)  // the front: selected face-edges (a faux diagonal is none)
+            if (!f.IsD())
+                for (int k = 0; k < 3; ++k)
+                    if (f.IsFaceEdgeS(k) && !f.IsF(k))
+                        pm.frontEdges.push_back(EdgeKey(vid[vcg::tri::Index(m, f.cV(k))], vid[vcg::tri::Index(m, f.cV1(k))]));
+        std::sort(pm.frontEdges.begin(), pm.frontEdges.end());
+        pm.frontEdges.erase(std::unique(pm.frontEdges.begin(), pm.frontEdges.end()), pm.frontEdges.end());
         return pm;
     }
 };
