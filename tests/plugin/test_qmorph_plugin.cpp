@@ -285,6 +285,10 @@ TEST(QMorphPlugin, WholePipelineOnFandiskAsTriangulated) { RunWholePipeline("fan
 // same chord between front nodes (a non-manifold edge) unless such chords are refused.
 // With VSA's automatic cap (568 patches) the re-meshing left one triangle standing on edge over a
 // claw, facing away from the input triangle closest to its centroid; mended at the re-meshing's end.
+// Once front chains over curved parts were coarsened to the target length, a cascade of splits
+// whose sides shrank with their base (0.54 -> 0.08 -> 0.04 of a 3.9 target) left a cluster of tiny
+// faces at one junction, one of them standing on edge; no split makes a side below a tenth of the
+// patch's mean edge now (FrontAdvance's kMinSideFraction).
 TEST(QMorphPlugin, WholePipelineOnArmadilloRemeshedCoarsely) { RunWholePipeline("armadillo", 3.0, true, nullptr, 0); }
 
 // Re-meshed at 1% of the diagonal (coarser than the automatic length on this scan): no face flipped,

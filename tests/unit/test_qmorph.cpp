@@ -203,7 +203,9 @@ TEST(QMorph, GradedStripsUseTransitionsAndKeepTheParity)
                 transitions, triangles[1], triangles[0], worstQuad[1], worstQuad[0]);
     EXPECT_GT(transitions, 10) << "rows of edge length 1/8 meeting rows of 1/2 need transitions";
     EXPECT_LT(triangles[1], triangles[0]) << "transitions leave fewer triangles than plain seams";
-    EXPECT_GT(worstQuad[1], worstQuad[0] + 0.03) << "and the worst quads are better";
+    // (0.48 against 0.45; the margin was over 0.03 until splits stopped making sides below a tenth of
+    // the mean edge, which left plain seams 32 triangles instead of 72)
+    EXPECT_GT(worstQuad[1], worstQuad[0] + 0.015) << "and the worst quads are better";
 }
 
 TEST(QMorph, CubeWithItsTwelveEdgesSelectedGivesSixQuadPatches)
