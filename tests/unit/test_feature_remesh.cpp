@@ -366,6 +366,44 @@ TEST(FeatureRemesh, ChordsOfASmoothFrontStayNearTheInputCurve)
         << "front edges farther than 0.1 L from the input's curve (or their vertices off it)";
 }
 
+// A front along a smooth bend is coarsened like one over flat surface: the outer equator of a
+// finely sliced torus (radii 3 and 1, 96 x 32 cells, neighbouring faces within 12 degrees) re-meshed
+// at L = 1, where the faces beside it come to meet at about 57 degrees. Sharp is the input's
+// dihedral (ShortEdgeCollapse::kSharpChainDeg): judged on the faces of the moment, the equator
+// froze as a crease once they met at 30 degrees (40 edges at any L from 0.8 to 1.2).
+TEST(FeatureRemesh, FrontAlongASmoothBendIsCoarsenedToTheTargetLength)
+{
+    const float R = 3.f, r = 1.f;
+    const int slices = 96;
+    TMesh m;
+    vcg::tri::Torus(m, R, r, slices, 32);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    vcg::tri::UpdateTopology<TMesh>::VertexFace(m);
+    auto onEquator = [&](const P3 &p) { return std::fabs(p[2]) < 1e-5f && vcg::Point2f(p[0], p[1]).Norm() > R; };
+    int ring = 0;
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (onEquator(f.P0(k)) && onEquator(f.P1(k))) {
+                f.SetFaceEdgeS(k);
+                ++ring;
+            }
+    ASSERT_EQ(ring, 2 * slices) << "the outer equator, both sides of each edge";
+    const auto in = vcg_ext::MeshChecks<TMesh>::Inspect(m);
+    ASSERT_TRUE(in.IsClosed() && in.IsTwoManifold() && in.IsOriented());
+
+    TMesh copy;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(copy, m);
+    vcg_ext::InputSurface<TMesh> surface(copy);
+    const double L = 1.0, circumference = 2 * M_PI * (R + r);
+    const auto st = vcg_ext::qmorph::FeatureRemesh<TMesh>::Do(m, surface, L, 5, 60);
+    std::printf("torus equator: %d -> %d front edges (circumference / L %.1f)\n", st.frontEdgesBefore, st.frontEdgesAfter,
+                circumference / L);
+    EXPECT_EQ(st.frontEdgesBefore, slices);
+    // edges between 4/5 L and 4/3 L: circumference / L within about 30%
+    EXPECT_LE(st.frontEdgesAfter, 1.3 * circumference / L) << "the front stayed finer than L";
+    EXPECT_GE(st.frontEdgesAfter, circumference / (4.0 / 3.0 * L)) << "front edges longer than 4/3 L";
+}
+
 // A cube (4 x 4 cells a side, cells 0.5) whose top has needles turned over: one vertex moved
 // across a grid line, 0.001 beyond the middle of the far edge of one of its triangles. Its two
 // triangles on that line become needles about 0.001 high facing down; they meet each other, the

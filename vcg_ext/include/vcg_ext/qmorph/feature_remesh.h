@@ -57,6 +57,7 @@ public:
     typedef vcg::tri::IsotropicRemeshing<MeshType> Remesher;
     typedef typename MeshType::CoordType CoordType;
     typedef vcg::Point3d P3;
+    typedef typename ShortEdgeCollapse<MeshType>::FeatureKind FeatureKind;
 
     struct Stats {
         int featureEdges = 0, frontEdgesBefore = 0, frontEdgesAfter = 0;
@@ -84,9 +85,9 @@ public:
         surface.UseCanonicalOrientation(true);
         if (cb) cb(0, "Q-Morph: re-meshing, features");
         SegmentGrid features(L);
-        std::vector<char> isFront;
-        MarkFeatures(m, creaseAngleDeg, features, isFront, st, L);
-        auto isFrontEdge = [&](const P3 &a, const P3 &b) { return OnFront(features, isFront, a, b); };
+        std::vector<FeatureKind> kinds;
+        MarkFeatures(m, creaseAngleDeg, features, kinds, st, L);
+        auto featureOf = [&](const P3 &a, const P3 &b) { return FeatureAt(features, kinds, a, b); };
         auto toFeatures = [&](const P3 &a, const P3 &b) { return CurveDeviation(features, a, b, L); };
 
         typename Remesher::Params p;
@@ -111,7 +112,7 @@ public:
             // grid over the whole input even when it has nothing to split, so it is skipped then
             for (int pass = 0; pass < kMaxSplitPasses && HasLongEdge(m, p) && Pass(m, surface.mesh, p, st, true, false) > 0; ++pass) {}
             progress(kCollapseStart, "collapses");
-            st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, isFrontEdge, toFeatures, [&](double done) {
+            st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, featureOf, toFeatures, [&](double done) {
                 char step[48];
                 std::snprintf(step, sizeof step, "collapses (%d%% of the vertices)", int(100 * done));
                 progress(kCollapseStart + done * (kFlipStart - kCollapseStart), step);
@@ -130,7 +131,7 @@ public:
         st.turnedBack = TurnBackFlippedFaces(m, surface);
         if (cb) cb(progressTo, "Q-Morph: re-meshing, the front selected again");
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
-        SelectFront(m, features, isFront, st);
+        SelectFront(m, features, kinds, st);
         BackToInputOrientation(m, reversedBit);
         surface.UseCanonicalOrientation(false);
         st.facesAfter = m.fn;
@@ -357,10 +358,11 @@ private:
 
     // Selected face-edges and sharp creases (but an unreliable face's): both sides flagged, each entered in
     // the grid.
-    static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<char> &isFront, Stats &st, double L)
+    static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<FeatureKind> &kinds, Stats &st, double L)
     {
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
+        const double sharpCos = std::cos(ShortEdgeCollapse<MeshType>::kSharpChainDeg * M_PI / 180);
         for (FaceType &f : m.face)
             for (int i = 0; i < 3; ++i) {
                 FaceType *g = f.FFp(i);
@@ -375,7 +377,10 @@ private:
                 f.SetFaceEdgeS(i);
                 g->SetFaceEdgeS(f.FFi(i));
                 grid.Add(Pos(f.V0(i)), Pos(f.V1(i)));
-                isFront.push_back(selected);
+                FeatureKind kind;
+                kind.front = selected;
+                kind.sharp = g != &f && UnitNormal(f) * UnitNormal(*g) < sharpCos;
+                kinds.push_back(kind);
                 ++st.featureEdges;
                 st.frontEdgesBefore += selected;
             }
@@ -403,16 +408,16 @@ private:
     }
     static constexpr double kBeside = 0.5;
 
-    // Whether the feature edge a-b lies on an original front edge (the one nearest its midpoint).
-    static bool OnFront(const SegmentGrid &grid, const std::vector<char> &isFront, const P3 &a, const P3 &b)
+    // The original feature edge a-b lies on (the one nearest its midpoint): front or crease, sharp.
+    static FeatureKind FeatureAt(const SegmentGrid &grid, const std::vector<FeatureKind> &kinds, const P3 &a, const P3 &b)
     {
         double d;
         const int id = grid.Nearest((a + b) * 0.5, d);
-        return id >= 0 && isFront[id];
+        return id >= 0 ? kinds[id] : FeatureKind();
     }
 
     // Every flagged output edge lies on one original feature edge: front when that one was.
-    static void SelectFront(MeshType &m, const SegmentGrid &grid, const std::vector<char> &isFront, Stats &st)
+    static void SelectFront(MeshType &m, const SegmentGrid &grid, const std::vector<FeatureKind> &kinds, Stats &st)
     {
         vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
@@ -420,7 +425,7 @@ private:
             for (int i = 0; i < 3; ++i) {
                 FaceType *g = f.FFp(i);
                 if (g < &f) continue;
-                const bool front = IsFeature(f, i) && OnFront(grid, isFront, Pos(f.V0(i)), Pos(f.V1(i)));
+                const bool front = IsFeature(f, i) && FeatureAt(grid, kinds, Pos(f.V0(i)), Pos(f.V1(i))).front;
                 const int j = f.FFi(i);
                 if (front) {
                     f.SetFaceEdgeS(i);

@@ -48,8 +48,12 @@ public:
     typedef vcg::Point3d P3;
     typedef vcg::tri::BasicVertexPair<VertexType> VertexPair;
     typedef vcg::tri::EdgeCollapser<MeshType, VertexPair> Collapser;
-    // Whether the feature edge a-b is front (true) or a crease (false).
-    typedef std::function<bool(const P3 &a, const P3 &b)> FeatureKind;
+    // The input's feature curve under the feature edge a-b: front (else a crease), and sharp (a
+    // sharp edge of the input surface, kSharpChainDeg).
+    struct FeatureKind {
+        bool front = false, sharp = false;
+    };
+    typedef std::function<FeatureKind(const P3 &a, const P3 &b)> FeatureOf;
     // How far the segment a-b strays from the input's feature curves (as they were before any
     // collapse) that it would replace.
     typedef std::function<double(const P3 &a, const P3 &b)> CurveDeviation;
@@ -60,9 +64,12 @@ public:
     // Largest distance (times L) of a removed chain vertex from the new chain edge, of a removed
     // vertex from the new triangles, and of a new triangle's centroid from the input.
     static constexpr double kChordTolerance = 0.1;
-    // A chain edge whose faces meet at more than this (degrees between normals) is a sharp edge of
-    // the surface: its chain is coarsened only where it is straight (chord below kStraightChord
-    // times the shorter of its two edges: straight up to rounding).
+    // A feature edge whose input faces meet at more than this (degrees between normals) is a sharp
+    // edge of the surface: its chain is coarsened only where it is straight (chord below
+    // kStraightChord times the shorter of its two edges: straight up to rounding). Judged on the
+    // input, not on the faces of the moment: beside a region boundary over a curved scan those bend
+    // more with every collapse, and the chain froze at the input's resolution (feline at 1% of its
+    // diagonal: 2.3 times the front edges of a chain at L).
     static constexpr double kSharpChainDeg = 30;
     static constexpr double kStraightChord = 1e-5;
     static constexpr double kSurfaceDistance = 0.1;
@@ -78,7 +85,7 @@ public:
     // border edge on its one side). Needs vertex-face adjacency; face-face adjacency is rebuilt.
     // `progress` (optional) gets the fraction of the vertices visited, every kProgressVertices.
     // Returns the number of collapses.
-    static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureKind &isFront,
+    static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureOf &featureOf,
                   const CurveDeviation &toCurves, const std::function<void(double)> &progress = {})
     {
         vcg::tri::RequireVFAdjacency(m);
@@ -107,17 +114,19 @@ public:
                     if (Distance(p, n.v) < minLength) candidates.push_back(n.v);
             } else if (features == 2) {
                 VertexType *ends[2];
-                bool sharp = false;
+                FeatureKind kinds[2];
                 int k = 0;
                 for (const Neighbour &n : ring)
                     if (n.feature) {
+                        kinds[k] = featureOf(Pos(p), Pos(n.v));
                         ends[k++] = n.v;
-                        sharp = sharp || n.Sharp();
                     }
+                const bool sharp = kinds[0].sharp || kinds[1].sharp;
                 const double chord = sharp ? kStraightChord * std::min(Distance(p, ends[0]), Distance(p, ends[1])) : kChordTolerance * L;
-                for (int e = 0; e < 2; ++e)
-                    if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], L, chord, sharp, isFront, toCurves))
-                        candidates.push_back(ends[e]);
+                if (kinds[0].front == kinds[1].front)  // a front chain and a crease stay apart
+                    for (int e = 0; e < 2; ++e)
+                        if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], L, chord, sharp, toCurves))
+                            candidates.push_back(ends[e]);
             }
             for (VertexType *q : candidates)
                 if (TryCollapse(m, surface, p, q, features == 0 && !border[vcg::tri::Index(m, q)] && !OnFeature(q), L)) {
@@ -133,9 +142,6 @@ private:
     struct Neighbour {
         VertexType *v = nullptr;
         bool feature = false;
-        P3 normal[2] = {P3(0, 0, 0), P3(0, 0, 0)};  // the unit normals of the (at most two) star faces on edge p-v
-        int faces = 0;
-        bool Sharp() const { return faces == 2 && normal[0] * normal[1] < std::cos(kSharpChainDeg * M_PI / 180); }
     };
 
     static P3 Pos(const VertexType *v) { return P3::Construct(v->cP()); }
@@ -148,30 +154,27 @@ private:
         for (vcg::face::VFIterator<FaceType> vfi(p); !vfi.End(); ++vfi) {
             FaceType *f = vfi.F();
             const int z = vfi.I();
-            const P3 n = ((Pos(f->V1(z)) - Pos(p)) ^ (Pos(f->V2(z)) - Pos(p))).Normalize();
-            Add(ring, f->V1(z), f->IsFaceEdgeS(z), n);
-            Add(ring, f->V2(z), f->IsFaceEdgeS((z + 2) % 3), n);
+            Add(ring, f->V1(z), f->IsFaceEdgeS(z));
+            Add(ring, f->V2(z), f->IsFaceEdgeS((z + 2) % 3));
         }
     }
-    static void Add(std::vector<Neighbour> &ring, VertexType *v, bool feature, const P3 &normal)
+    static void Add(std::vector<Neighbour> &ring, VertexType *v, bool feature)
     {
         for (Neighbour &n : ring)
             if (n.v == v) {
                 n.feature = n.feature || feature;
-                if (n.faces < 2) n.normal[n.faces++] = normal;
                 return;
             }
         Neighbour n;
         n.v = v;
         n.feature = feature;
-        n.normal[n.faces++] = normal;
         ring.push_back(n);
     }
 
-    // a-p-q, a chain of two feature edges: p may go onto q when the new edge a-q is not too long,
-    // passes within maxChord of p, and both edges are of one kind.
+    // a-p-q, a chain of two feature edges of one kind: p may go onto q when the new edge a-q is not
+    // too long and passes within maxChord of p.
     static bool ChainAllows(const VertexType *p, const VertexType *a, const VertexType *q, double L, double maxChord, bool sharp,
-                            const FeatureKind &isFront, const CurveDeviation &toCurves)
+                            const CurveDeviation &toCurves)
     {
         const P3 A = Pos(a), P = Pos(p), Q = Pos(q);
         if ((Q - A).Norm() > kMaxLength * L) return false;
@@ -183,8 +186,7 @@ private:
         if (chord > maxChord) return false;
         // over smooth surface the chain may already be a chord of chords: the new edge is held to
         // the input's curve itself (a sharp chain is coarsened only where straight: nothing drifts)
-        if (!sharp && toCurves(A, Q) > maxChord) return false;
-        return isFront(A, P) == isFront(P, Q);
+        return sharp || toCurves(A, Q) <= maxChord;
     }
 
     // Whether a feature edge ends at v.
