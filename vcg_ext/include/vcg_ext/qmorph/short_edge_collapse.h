@@ -10,8 +10,8 @@
 //   when q is off the features too, else at q;
 // - p inside a feature chain (exactly two feature edges, a-p and p-q): into q along the chain,
 //   when both edges are of one kind (front or crease) and a-q stays on the curve: exactly (up to
-//   rounding) where the chain is a sharp edge of the surface, a CAD crease whose geometry is the
-//   feature; within a small chord distance where it runs over smooth surface (a straightened region
+//   rounding) where the chain is a sharp edge of the input surface, a CAD crease whose geometry is
+//   the feature; within a small chord distance where it runs over smooth input (a straightened region
 //   boundary on a scan, itself a polyline through the input's triangles), of the removed vertex and
 //   of the input's curve (the chain may already be made of chords);
 // - a vertex with one or three or more feature edges (a corner or an end) never moves.
