@@ -368,7 +368,8 @@ private:
                 FaceType *g = f.FFp(i);
                 if (g < &f) continue;  // once per edge (a border edge has g == &f)
                 const bool selected = IsFeature(f, i);
-                bool crease = g != &f && creaseAngleDeg < 180 && UnitNormal(f) * UnitNormal(*g) < creaseCos;
+                const double cosBetween = g != &f ? UnitNormal(f) * UnitNormal(*g) : 1;  // of the faces' normals
+                bool crease = creaseAngleDeg < 180 && cosBetween < creaseCos;
                 if (crease && (Unreliable(f, L) || Unreliable(*g, L))) {
                     crease = false;
                     ++st.needleCreases;
@@ -379,7 +380,7 @@ private:
                 grid.Add(Pos(f.V0(i)), Pos(f.V1(i)));
                 FeatureKind kind;
                 kind.front = selected;
-                kind.sharp = g != &f && UnitNormal(f) * UnitNormal(*g) < sharpCos;
+                kind.sharp = cosBetween < sharpCos;
                 kinds.push_back(kind);
                 ++st.featureEdges;
                 st.frontEdgesBefore += selected;
