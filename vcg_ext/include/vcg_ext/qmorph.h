@@ -32,6 +32,7 @@
 #include <vcg_ext/common/format.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/parallel.h>
+#include <vcg_ext/common/point_query_memo.h>
 #include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph/all_quads.h>
@@ -306,8 +307,13 @@ private:
                 const double side = in.reversed ? -1 : 1;  // the patch is read the other way round
                 // The patch's distance starts the search only where the patch is the input itself.
                 const bool patchIsInput = !(res.targetEdgeLength > 0);
-                mm.judge = [&input, side, patchIsInput](const P3 &p, double near) {  // read-only queries: no lock
-                    return input.NormalUnder(p, P3(0, 0, 0), patchIsInput ? near : -1) * side;
+                // Read-only queries (no lock), each remembered by this patch's memo: one patch asks
+                // again and again under the same centroids.
+                PointQueryMemo<P3> judged;
+                mm.judge = [&input, &judged, side, patchIsInput](const P3 &p, double near) {
+                    return judged.Get(p, patchIsInput ? near : -1, [&](const P3 &q, double within) {
+                        return input.NormalUnder(q, P3(0, 0, 0), within) * side;
+                    });
                 };
                 mm.facesEveryClosest = [&input, side](const P3 &p, const P3 &direction) {
                     return input.FacesEveryClosest(p, direction * side);

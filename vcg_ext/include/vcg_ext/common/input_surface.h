@@ -97,13 +97,35 @@ public:
         return grid.GetClosest(distance, noMarks, p, mesh.bbox.Diag(), dist, closest);
     }
 
+    // One closest-point search at a point, for the several questions a caller asks there (each
+    // search is the cost of those questions); the triangles tied with the closest are searched once
+    // too, when a question needs them.
+    struct Near {
+        CoordType q, closest;               // the point (in the mesh's scalar type) and its closest point
+        const FaceType *face = nullptr;     // the closest input triangle (null: none)
+        std::vector<FaceType *> tied;       // TiedWithClosest, once `tiedKnown`
+        bool tiedKnown = false;
+    };
+    Near Nearest(const P3 &p, double within = -1)
+    {
+        Near near;
+        near.q = CoordType::Construct(p);
+        near.face = Closest(near.q, near.closest, within);
+        return near;
+    }
+
     // Unit normal of the input triangle closest to p, or `own` when a triangle facing the other way
     // across a crease sharper than 90 degrees is as close (or there is none). `within`: a
     // distance to a surface near p known to the caller, where the search starts (< 0: unknown).
     P3 NormalUnder(const P3 &p, const P3 &own, double within = -1)
     {
-        const FaceType *near = UnambiguousClosest(p, within);
-        return near ? P3::Construct(Normal(near)) : own;
+        Near near = Nearest(p, within);
+        return NormalUnder(near, own);
+    }
+    P3 NormalUnder(Near &near, const P3 &own)
+    {
+        const FaceType *f = UnambiguousClosest(near);
+        return f ? P3::Construct(Normal(f)) : own;
     }
 
     // Whether `direction` points the way of every input triangle closest to p: when p is as close to
@@ -114,14 +136,15 @@ public:
     // them. True when there is no triangle. `within`: as for NormalUnder.
     bool FacesEveryClosest(const P3 &p, const P3 &direction, double within = -1)
     {
-        CoordType closest;
-        const CoordType q = CoordType::Construct(p);
-        const FaceType *near = Closest(q, closest, within);
-        if (!near) return true;
-        if (!(P3::Construct(Normal(near)) * direction > 0)) return false;
-        const std::vector<FaceType *> around = TiedWithClosest(q, closest);
-        for (const FaceType *f : around)
-            if (f->cN() * near->cN() >= 0 && !(P3::Construct(Normal(f)) * direction > 0)) return false;
+        Near near = Nearest(p, within);
+        return FacesEveryClosest(near, direction);
+    }
+    bool FacesEveryClosest(Near &near, const P3 &direction)
+    {
+        if (!near.face) return true;
+        if (!(P3::Construct(Normal(near.face)) * direction > 0)) return false;
+        for (const FaceType *f : Tied(near))
+            if (f->cN() * near.face->cN() >= 0 && !(P3::Construct(Normal(f)) * direction > 0)) return false;
         return true;
     }
 
@@ -202,18 +225,26 @@ private:
         return around;
     }
 
-    // The input triangle closest to p, or null when there is none or p is as close to a triangle
-    // facing the other way across a crease sharper than 90 degrees.
+    const std::vector<FaceType *> &Tied(Near &near)
+    {
+        if (!near.tiedKnown) near.tied = TiedWithClosest(near.q, near.closest);
+        near.tiedKnown = true;
+        return near.tied;
+    }
+
+    // The input triangle closest to the point, or null when there is none or the point is as close
+    // to a triangle facing the other way across a crease sharper than 90 degrees.
+    const FaceType *UnambiguousClosest(Near &near)
+    {
+        if (!near.face || !besideSharpCrease[vcg::tri::Index(mesh, near.face)]) return near.face;
+        for (const FaceType *f : Tied(near))
+            if (f->cN() * near.face->cN() < 0) return nullptr;
+        return near.face;
+    }
     const FaceType *UnambiguousClosest(const P3 &p, double within = -1)
     {
-        CoordType closest;
-        const CoordType q = CoordType::Construct(p);
-        const FaceType *near = Closest(q, closest, within);
-        if (!near || !besideSharpCrease[vcg::tri::Index(mesh, near)]) return near;
-        const std::vector<FaceType *> around = TiedWithClosest(q, closest);
-        for (const FaceType *f : around)
-            if (f->cN() * near->cN() < 0) return nullptr;
-        return near;
+        Near near = Nearest(p, within);
+        return UnambiguousClosest(near);
     }
 
     // Optional per-face marks (MeshLab's CMeshO) are switched on; a mesh type with fixed ones has no switch.

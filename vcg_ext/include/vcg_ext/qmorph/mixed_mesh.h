@@ -65,7 +65,8 @@ public:
     // Optional: the normal of the surface the mesh must agree with (the whole input) under a
     // point, or (0, 0, 0) where it cannot tell (then the patch's own surface decides); used by
     // every orientation judgement (see InputSurfaceNormalAt). The second argument: how far the
-    // patch's surface is from the point, where the search starts (< 0: unknown).
+    // patch's surface is from the point, where the search starts (< 0: unknown; always so when
+    // the patch is not the input, see patchIsInput).
     std::function<P3(const P3 &, double)> judge;
     // Optional, with the judge: whether a direction (a new triangle's normal) faces every input
     // triangle as close to a point as the judge's (a tie the judge breaks one way, an independent
@@ -287,10 +288,14 @@ public:
     // side of a tight bend, and a re-meshed patch is not the input).
     P3 InputSurfaceNormalAt(const P3 &point, const int *homes, int count, bool exact = false) const
     {
+        // off the input the judge needs no distance: the walk only where it cannot tell
+        const bool judgeFirst = exact && judge && !patchIsInput;
+        P3 judged(0, 0, 0);
+        if (judgeFirst && (judged = judge(point, -1)).SquaredNorm() > 0) return judged;
         double distance = -1;
         const P3 n = input ? input->NormalAt(point, homes, count, &distance) : P3(0, 0, 0);
         if (!exact || !judge) return n;
-        const P3 judged = judge(point, distance);
+        if (!judgeFirst) judged = judge(point, distance);
         return judged.SquaredNorm() > 0 ? judged : n;
     }
     // Unit normal of the input surface under face f, at its centroid (as an independent judge

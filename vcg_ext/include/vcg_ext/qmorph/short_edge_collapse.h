@@ -218,11 +218,10 @@ private:
             const P3 n = after / after.Norm();
             // facing the input under it, and every input triangle as close (a triangle standing on
             // edge over an input edge faces one of them only: an independent check may take either)
-            if (surface.NormalUnder(centroid, n) * n <= 0 || !surface.FacesEveryClosest(centroid, n)) return false;
-            CoordType onSurface;
-            if (!surface.Closest(CoordType::Construct(centroid), onSurface) ||
-                (P3::Construct(onSurface) - centroid).Norm() > kSurfaceDistance * L)
-                return false;
+            // (one search under the centroid answers all three questions)
+            typename InputSurface<MeshType>::Near under = surface.Nearest(centroid);
+            if (surface.NormalUnder(under, n) * n <= 0 || !surface.FacesEveryClosest(under, n)) return false;
+            if (!under.face || (P3::Construct(under.closest) - centroid).Norm() > kSurfaceDistance * L) return false;
             worstAfter = std::min(worstAfter, double(vcg::Quality(X, b, c)));
             double d;
             P3 closest;
