@@ -29,7 +29,6 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/progress_relay.h>
-#include <vcg_ext/common/quaternary_heap.h>
 #include <vcg_ext/mesh_checks.h>
 
 namespace vcg_ext {
@@ -276,7 +275,7 @@ private:
             label[f] = -1;
             queued[f].error = std::numeric_limits<double>::infinity();
         }
-        QuaternaryHeap<QueueItem> q;  // the same pops as std::priority_queue (a total order), faster
+        std::priority_queue<QueueItem> q;
         auto push = [&](int g, int r) {
             const QueueItem it{Error(g, r), g, r};
             if (it.error < queued[g].error || (it.error == queued[g].error && r < queued[g].region)) {

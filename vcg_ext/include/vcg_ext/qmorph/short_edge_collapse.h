@@ -197,12 +197,11 @@ private:
         return false;
     }
 
-    // The triangles of v's star that survive the collapse of v-w, with v put at X, checked: each keeps
-    // facing the input surface's normal and its old orientation, has no edge from X over 4/3 L, and
-    // its centroid stays near the input; worst qualities before and after, and the distance from
-    // v's old place to the new triangles, are accumulated.
-    static bool StarAllows(InputSurface<MeshType> &surface, VertexType *v, VertexType *w, const P3 &X, double L,
-                           double &worstBefore, double &worstAfter, double &nearestToV)
+    // The triangles of v's star that survive the collapse of v-w, with v put at X, checked in the
+    // plane: each keeps its old orientation and has no edge from X over 4/3 L; worst qualities
+    // before and after, and the distance from v's old place to the new triangles, are accumulated.
+    static bool StarShapeAllows(VertexType *v, VertexType *w, const P3 &X, double L, double &worstBefore, double &worstAfter,
+                                double &nearestToV)
     {
         const P3 V = Pos(v);
         for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi) {
@@ -214,14 +213,6 @@ private:
             if ((b - X).Norm() > kMaxLength * L || (c - X).Norm() > kMaxLength * L) return false;
             const P3 before = (b - V) ^ (c - V), after = (b - X) ^ (c - X);
             if (!(after.Norm() > 0) || after * before <= 0) return false;
-            const P3 centroid = (X + b + c) / 3.0;
-            const P3 n = after / after.Norm();
-            // facing the input under it, and every input triangle as close (a triangle standing on
-            // edge over an input edge faces one of them only: an independent check may take either)
-            // (one search under the centroid answers all three questions)
-            typename InputSurface<MeshType>::Near under = surface.Nearest(centroid);
-            if (surface.NormalUnder(under, n) * n <= 0 || !surface.FacesEveryClosest(under, n)) return false;
-            if (!under.face || (P3::Construct(under.closest) - centroid).Norm() > kSurfaceDistance * L) return false;
             worstAfter = std::min(worstAfter, double(vcg::Quality(X, b, c)));
             double d;
             P3 closest;
@@ -231,8 +222,30 @@ private:
         return true;
     }
 
+    // The same triangles against the input surface: each faces the input's normal under its
+    // centroid (and every input triangle as close: a triangle standing on edge over an input edge
+    // faces one of them only, an independent check may take either), and its centroid stays near
+    // the input. One closest-point search per triangle answers the three questions.
+    static bool StarOnInput(InputSurface<MeshType> &surface, VertexType *v, VertexType *w, const P3 &X, double L)
+    {
+        for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi) {
+            FaceType *f = vfi.F();
+            const int z = vfi.I();
+            if (f->V1(z) == w || f->V2(z) == w) continue;
+            const P3 b = Pos(f->V1(z)), c = Pos(f->V2(z));
+            const P3 after = (b - X) ^ (c - X);
+            const P3 centroid = (X + b + c) / 3.0;
+            const P3 n = after / after.Norm();
+            typename InputSurface<MeshType>::Near under = surface.Nearest(centroid);
+            if (surface.NormalUnder(under, n) * n <= 0 || !surface.FacesEveryClosest(under, n)) return false;
+            if (!under.face || (P3::Construct(under.closest) - centroid).Norm() > kSurfaceDistance * L) return false;
+        }
+        return true;
+    }
+
     // Removes p into q when every triangle that changes stays right against the input surface. The
     // merged vertex goes to the edge's midpoint (on the input) when q is free too, else stays at q.
+    // The tests in the plane first: the closest-point searches are most of a collapse's cost.
     static bool TryCollapse(MeshType &m, InputSurface<MeshType> &surface, VertexType *p, VertexType *q, bool qFree, double L)
     {
         VertexPair pair(p, q);
@@ -244,13 +257,14 @@ private:
             X = P3::Construct(onSurface);
         }
         double worstBefore = 1, worstAfter = 1, nearestToP = std::numeric_limits<double>::max(), nearestToQ = 0;
-        if (!StarAllows(surface, p, q, X, L, worstBefore, worstAfter, nearestToP)) return false;
+        if (!StarShapeAllows(p, q, X, L, worstBefore, worstAfter, nearestToP)) return false;
         if (qFree) {
             nearestToQ = std::numeric_limits<double>::max();
-            if (!StarAllows(surface, q, p, X, L, worstBefore, worstAfter, nearestToQ)) return false;
+            if (!StarShapeAllows(q, p, X, L, worstBefore, worstAfter, nearestToQ)) return false;
         }
         if (worstAfter < std::min(worstBefore, kMinQuality)) return false;
         if (std::max(nearestToP, nearestToQ) > kSurfaceDistance * L) return false;
+        if (!StarOnInput(surface, p, q, X, L) || (qFree && !StarOnInput(surface, q, p, X, L))) return false;
         Collapser::Do(m, pair, CoordType::Construct(X), true);
         FlagFeaturesOnBothSides(q);
         return true;
