@@ -125,7 +125,7 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     }
 
     Log("%s%s", r.Summary().c_str(), qUtf8Printable(layerNote));
-    if (!r.RemeshSummary().empty()) Log("%s", r.RemeshSummary().c_str());
+    if (!r.RemeshSummary().empty()) Log("%s; %.3f s", r.RemeshSummary().c_str(), r.remeshSeconds);
     Log("%s", r.QualitySummary().c_str());
 
     if (!exportPath.isEmpty()) {
