@@ -302,6 +302,7 @@ private:
                 // Extract writes only its own patch's sectors of the partition's scratch.
                 qmorph::PatchInput in = part.Extract(m, begin, end);
                 r.hasFront = in.hasFront;
+                PointQueryMemo<P3> judged;  // before mm: its judge holds a reference to it
                 qmorph::MixedMesh mm;
                 mm.Build(in.points, in.tris, in.cut);
                 mm.plannedSides = in.plannedSides;
@@ -312,7 +313,6 @@ private:
                 const bool patchIsInput = !(res.targetEdgeLength > 0);
                 // Read-only queries (no lock), each remembered by this patch's memo: one patch asks
                 // again and again under the same centroids.
-                PointQueryMemo<P3> judged;
                 mm.judge = [&input, &judged, side, patchIsInput](const P3 &p, double near) {
                     return judged.Get(p, patchIsInput ? near : -1, [&](const P3 &q, double within) {
                         return input.NormalUnder(q, P3(0, 0, 0), within) * side;

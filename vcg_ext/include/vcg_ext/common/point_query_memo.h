@@ -52,7 +52,7 @@ private:
         std::memcpy(&b, &x, sizeof b);
         return b;
     }
-    // Same bits (so -0 and 0 differ, NaN matches itself: the query is asked again for neither).
+    // Same bits: -0 and 0 are two keys, and a NaN is a key like any other (its answer is kept too).
     static bool Same(double a, double b) { return Bits(a) == Bits(b); }
     static bool Same(const P3 &a, const P3 &b) { return Same(a[0], b[0]) && Same(a[1], b[1]) && Same(a[2], b[2]); }
     static uint64_t Mix(uint64_t x)  // splitmix64's finaliser
