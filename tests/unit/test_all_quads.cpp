@@ -135,3 +135,39 @@ TEST(AllQuads, NoMergeAcrossAFrontEdge)
     EXPECT_EQ(r.stats.quads, 7);
     EXPECT_EQ(r.selectedHalves, 4) << "A-B cut in two, each half selected on both sides";
 }
+
+// A quad turned the other way than the input at one corner (a dart: A(0,0) B(4,0) C(1,1) D(0,4),
+// facing +z, its corner C bent in past the diagonal B-D), as a thin quad bent over a fillet is seen
+// from the input under one of its corners (rocker_arm_20k with All quads): split at its centroid
+// (1.25, 1.25), which lies outside it, the quarter at C turns over. The centre, a point of its own,
+// is moved instead: no quarter turned over.
+TEST(AllQuads, AQuarterTurnedOverByTheCentroidGetsAnotherCentre)
+{
+    TMesh input, m;
+    MakeInputPlane(input);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    const D3 a(0, 0, 0), b(4, 0, 0), c(1, 1, 0), d(0, 4, 0);
+    Build(m, {P3::Construct(a), P3::Construct(b), P3::Construct(c), P3::Construct(d)}, {{0, 1, 2}, {0, 2, 3}});
+    m.face[0].SetF(2);  // C-A, the dart's inner diagonal
+    m.face[1].SetF(0);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    // the straight split's quarter at C: C, midpoint to D, centroid, midpoint from B
+    const D3 centroid = (a + b + c + d) / 4;
+    const D3 quarterAtC[4] = {c, (c + d) / 2, centroid, (b + c) / 2};
+    ASSERT_LT(vcg_ext::VectorArea(quarterAtC, 4)[2], 0) << "the centroid's quarter at C is turned over";
+
+    const AllQuads::Stats st = AllQuads::Split(m, surface, 60);
+    EXPECT_EQ(st.quads, 4);
+    const vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
+    ASSERT_EQ(pm.faces.size(), 4u);
+    for (const std::vector<int> &f : pm.faces) {
+        ASSERT_EQ(f.size(), 4u);
+        const D3 q[4] = {pm.points[f[0]], pm.points[f[1]], pm.points[f[2]], pm.points[f[3]]};
+        EXPECT_GT(vcg_ext::VectorArea(q, 4)[2], 0) << "a quarter turned over";
+        EXPECT_FALSE(vcg_ext::IsFolded(q));
+    }
+    // the centre stays on the input (the plane) and inside the dart (on the inner side of B-D)
+    const int centre = int(m.vert.size()) - 1;
+    EXPECT_EQ(m.vert[centre].P()[2], 0);
+    EXPECT_LT(m.vert[centre].P()[0] + m.vert[centre].P()[1], 4);
+}

@@ -102,19 +102,18 @@ public:
             midpoint[key] = int(pos.size());
             pos.push_back(mid);
         }
-        // face centres and the new quads (corner, midpoint, centre, midpoint)
-        struct NewQuad {
-            std::array<int, 4> v;
-            float quality;
-        };
+        // face centres and the new quads
         std::vector<NewQuad> quads;
+        std::vector<int> firstQuad, centreOf;  // per polygon: its first quad (the others follow) and its centre
         for (size_t i = 0; i < polygons.size(); ++i) {
             const Polygon &p = polygons[i];
+            firstQuad.push_back(int(quads.size()));
             const std::vector<int> byIndex = CornersByIndex(p);
             P3 centre(0, 0, 0);
             for (int k : byIndex) centre += pos[p.v[k]];
             centre /= double(p.size);
             const int c = int(pos.size());
+            centreOf.push_back(c);
             straight.push_back(centre);
             pos.push_back(OnSurface(surface, centre, normal[i]));
             for (int k : byIndex) {  // the same quads in the same order, whichever way p runs
@@ -144,6 +143,12 @@ public:
             }
             if (!reverted) break;
         }
+        // a polygon whose quarters still turn over or invert (a thin or twisted face on a crease, a
+        // face turning the other way than the input under one of its corners): its centre, its own
+        // point, moved to where the worst of them is best
+        const Children children{polygons, firstQuad, quads};
+        for (size_t i = 0; i < polygons.size(); ++i)
+            if (WorstQuadOf(children, int(i), pos, surface) <= 0) PlaceCentre(children, int(i), pos, straight[centreOf[i] - oldVertices], surface);
 
         // m rebuilt: the new points appended, two triangles (faux diagonal) per quad
         auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, pos.size() - oldVertices);
@@ -185,6 +190,20 @@ private:
     // A pentagon made of a triangle and a quad must be clearly better than the two split apart:
     // its worst child's scaled Jacobian (against the input's normal) above theirs by this much.
     static constexpr double kMergeGain = 0.05;
+
+    // The search for a better centre: its steps in the first round, as fractions of the way from
+    // the straight centre to each corner (negative: away from it), its rounds (the steps halved
+    // each), and the least rise of the worst quad that moves the centre.
+    static constexpr double kCentreSteps[4] = {0.25, 0.5, -0.25, -0.5};
+    static constexpr int kCentreRounds = 4;
+    static constexpr double kMinGain = 1e-3;
+    // A new quad turned over (the quality report's flipped face), below any scaled Jacobian.
+    static constexpr double kTurnedOver = -2;
+
+    struct NewQuad {
+        std::array<int, 4> v;  // an old corner, a midpoint, the centre, a midpoint
+        float quality;
+    };
 
     struct Polygon {
         std::array<int, 5> v;  // indices into m.vert, counter-clockwise (a pentagon only from a merge)
@@ -351,6 +370,67 @@ private:
     {
         const P3 corners[4] = {pos[v[0]], pos[v[1]], pos[v[2]], pos[v[3]]};
         return VectorArea(corners, 4);
+    }
+
+    // A new quad's quality against the input surface's normal under its centroid: its scaled
+    // Jacobian, -1 when folded or without area (negative: turned over). Corners read from the old
+    // one towards the lower-numbered midpoint, so a flipped copy gets the same value.
+    static double ChildQuality(const NewQuad &q, const std::vector<P3> &pos, InputSurface<MeshType> &surface)
+    {
+        const bool backwards = q.v[3] < q.v[1];
+        const P3 corners[4] = {pos[q.v[0]], pos[q.v[backwards ? 3 : 1]], pos[q.v[2]], pos[q.v[backwards ? 1 : 3]]};
+        P3 n = VectorArea(corners, 4);  // of the corners as read: the quad's own is the other way when backwards
+        if (!(n.Norm() > 0) || IsFolded(corners)) return -1;
+        if (backwards) n = -n;
+        const P3 under = surface.NormalUnder((corners[0] + corners[1] + corners[2] + corners[3]) / 4.0, n / n.Norm());
+        if (!(under * n > 0)) return kTurnedOver;
+        return ScaledJacobian(corners, backwards ? -under : under);
+    }
+
+    // The polygons and their new quads: polygon i's from firstQuad[i] on, one per corner, the
+    // polygon's centre their third corner.
+    struct Children {
+        const std::vector<Polygon> &polygons;
+        const std::vector<int> &firstQuad;
+        const std::vector<NewQuad> &quads;
+    };
+
+    // The worst ChildQuality of polygon i's quads (as they are now).
+    static double WorstQuadOf(const Children &ch, int i, const std::vector<P3> &pos, InputSurface<MeshType> &surface)
+    {
+        double worst = 1;
+        for (int k = 0; k < ch.polygons[i].size; ++k) worst = std::min(worst, ChildQuality(ch.quads[ch.firstQuad[i] + k], pos, surface));
+        return worst;
+    }
+
+    // Polygon i's centre (a point no other polygon has) searched for about its straight place
+    // `centre`: a pattern search of steps toward and away from each corner, each place tried as it
+    // is and moved onto the surface, the steps halved each round from the best place so far; the
+    // place whose worst quad is best is kept if it is better than where the centre is.
+    static void PlaceCentre(const Children &ch, int i, std::vector<P3> &pos, const P3 &centre, InputSurface<MeshType> &surface)
+    {
+        const Polygon &p = ch.polygons[i];
+        P3 &c = pos[ch.quads[ch.firstQuad[i]].v[2]];
+        const P3 normal = PolygonNormal(pos, p);
+        P3 best = c, base = centre;  // base: the best place's straight place, where the next steps start
+        double bestWorst = WorstQuadOf(ch, i, pos, surface) + kMinGain, scale = 1;
+        for (int round = 0; round < kCentreRounds; ++round, scale /= 2) {
+            const P3 from = base;
+            for (int k : CornersByIndex(p))
+                for (double step : kCentreSteps) {
+                    const P3 place = from + (pos[p.v[k]] - centre) * (step * scale);
+                    for (const P3 &candidate : {place, OnSurface(surface, place, normal)}) {
+                        c = candidate;
+                        const double worst = WorstQuadOf(ch, i, pos, surface);
+                        if (worst > bestWorst) {
+                            bestWorst = worst;
+                            best = candidate;
+                            base = place;
+                        }
+                    }
+                }
+        }
+        c = best;
     }
 
     // p moved onto the input surface, unless the input there faces away from `normal` (a thin part).
