@@ -90,9 +90,13 @@ bool QMorphFrontPlugin::applySplit(MeshDocument &md, const RichParameterList &pa
     if (cb) cb(100, "Split Triangles along Front: done");
 
     Log("Split Triangles along Front: %d polyline points (%d at vertices, %d on edges, %d inside faces, %d merged), "
-        "%d segments (%d traced, %d crossings added); locate tolerance %.3g",
+        "%d segments (%d traced%s, %d crossings added); locate tolerance %.3g",
         r.polylinePoints, r.pointsAtVertices, r.pointsOnEdges, r.pointsInFaces, r.mergedPoints, r.polylineSegments,
-        r.tracedSegments, r.tracedCrossings, r.tolerance);
+        r.tracedSegments,
+        r.edgePathSegments ? qUtf8Printable(QString(", %1 of them along mesh edges (no plane section joins their ends)")
+                                                .arg(r.edgePathSegments))
+                           : "",
+        r.tracedCrossings, r.tolerance);
     Log("Split Triangles along Front: %d faces crossed, %d faces re-triangulated; %d vertices and %d faces added; "
         "%d front edges selected; %d patches%s; %s; %.3f s%s",
         r.facesCrossed, r.facesSplit, r.verticesAdded, r.facesAdded, r.frontEdges, r.patches,

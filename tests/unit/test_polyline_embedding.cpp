@@ -286,3 +286,28 @@ TEST(PolylineEmbedding, SplittingARegionGivesTheSmallerPieceANewId)
     EXPECT_NEAR(above4, 0.7, 1e-6) << "the larger patch keeps the id";
     EXPECT_NEAR(below5, 0.3, 1e-6) << "the smaller one gets the next free id";
 }
+
+// Across the rim of a part thinner than its triangles (a plate 0.002 thick, triangles 0.5 wide; a
+// scan's thin flap, diplodocus from CGAL's data): a segment from the top sheet straight down to
+// the bottom one has ends whose normals are opposite and parallel to it, so no plane section
+// joins them. It is laid along the shortest chain of mesh edges over the rim instead, a chain of
+// selected edges from end to end, and the split keeps every other invariant.
+TEST(PolylineEmbedding, SegmentAcrossAThinRimFollowsMeshEdges)
+{
+    TMesh m, before, poly;
+    MakeCube(m, 4);
+    for (TVertex &v : m.vert) v.P()[2] *= 0.001f;
+    Copy(before, m);
+    MakePolyline(poly, {P3(0.7f, 0.1f, 0.001f), P3(0.7f, 0.1f, -0.001f)});
+    Embedding::Result r = Embed(m, poly);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.tracedSegments, 1);
+    EXPECT_EQ(r.edgePathSegments, 1);
+    EXPECT_EQ(r.pointsInFaces, 2);
+    EXPECT_GE(r.frontEdges, 4) << "in to the top sheet's corner, over the rim (two edges), out to the end";
+    SplitExpectations x;
+    x.closedFront = false;
+    x.pointsInFaces = true;
+    x.straightSegments = false;
+    ExpectSplitInvariants(before, m, poly, x);
+}

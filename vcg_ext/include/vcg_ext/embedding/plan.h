@@ -264,9 +264,12 @@ private:
                 if (!AddSubSegment(s.first, s.second)) return false;
                 continue;
             }
-            if (!tr->Trace(A, B, maxSteps, path))
-                return Error("the polyline segment from " + Pos(A.pos) + " to " + Pos(B.pos) +
-                             " cannot be traced on the surface (the plane section through its ends does not join them)");
+            if (!tr->Trace(A, B, maxSteps, path)) {
+                if (!tr->EdgePath(A, B, path))
+                    return Error("the polyline segment from " + Pos(A.pos) + " to " + Pos(B.pos) +
+                                 " cannot be traced on the surface (no path over the surface joins its ends)");
+                ++r.edgePathSegments;
+            }
             ++r.tracedSegments;
             int prev = s.first;
             for (const LocatedPoint &q : path) {

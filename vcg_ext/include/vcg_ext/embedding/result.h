@@ -32,6 +32,7 @@ struct EmbeddingResult {
     int mergedPoints = 0;        // polyline points merged with an earlier one within the tolerance
     int tracedSegments = 0;      // segments whose ends shared no face
     int tracedCrossings = 0;     // edge crossings / vertices added by tracing
+    int edgePathSegments = 0;    // traced segments no plane section joins, laid along mesh edges instead
     int facesCrossed = 0;        // faces a polyline segment runs through (inside)
     int facesSplit = 0;          // faces re-triangulated (crossed, or with a new vertex on an edge)
     int verticesAdded = 0;

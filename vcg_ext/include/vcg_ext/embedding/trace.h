@@ -14,6 +14,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <unordered_map>
 #include <vector>
 
 #include <vcg_ext/embedding/adjacency.h>
@@ -78,25 +82,80 @@ public:
         path.clear();
         EmbedVec chord = b.pos - a.pos;
         if (!(chord.Norm() > 0)) return false;
-        // Plane normal: chord x average normal (falling back on either normal alone).
+        // Plane normal: chord x average normal, then chord x either normal alone: across the rim
+        // of a part thinner than its triangles the two ends lie on sheets facing apart, their
+        // average normal is about nothing and its plane misses the rim.
         const EmbedVec na = Normal(a), nb = Normal(b);
         const EmbedVec candidates[3] = {na + nb, na, nb};
-        plane = EmbedVec(0, 0, 0);
+        origin = a.pos;
         for (const EmbedVec &n : candidates) {
             EmbedVec pn = chord ^ n;
-            if (pn.Norm() > 1e-9 * chord.Norm() * std::max(1e-300, n.Norm())) { plane = pn.Normalize(); break; }
+            if (!(pn.Norm() > 1e-9 * chord.Norm() * std::max(1e-300, n.Norm()))) continue;
+            plane = pn.Normalize();
+            std::vector<Step> first = Exits(a, nullptr, -1);
+            std::sort(first.begin(), first.end(), [&](const Step &x, const Step &y) {
+                return (x.point.pos - a.pos) * chord > (y.point.pos - a.pos) * chord;
+            });
+            for (const Step &s : first)
+                if (Walk(a, s, b, maxSteps, path)) return true;
         }
-        if (plane.SquaredNorm() == 0) return false;
-        origin = a.pos;
-
-        std::vector<Step> first = Exits(a, nullptr, -1);
-        std::sort(first.begin(), first.end(), [&](const Step &x, const Step &y) {
-            return (x.point.pos - a.pos) * chord > (y.point.pos - a.pos) * chord;
-        });
-        for (const Step &s : first)
-            if (Walk(a, s, b, maxSteps, path)) return true;
         path.clear();
         return false;
+    }
+
+    // The last resort where no plane section joins a and b (across the rim of a part thinner than
+    // its triangles, where the section curves of both sheets miss each other): the shortest chain
+    // of mesh edges from a corner of a face holding a to a corner of a face holding b (Dijkstra,
+    // lengths straight, ties by vertex index), as vertex points. False when none joins them.
+    bool EdgePath(const LocatedPoint &a, const LocatedPoint &b, std::vector<LocatedPoint> &path) const
+    {
+        path.clear();
+        struct Reached {
+            double dist;
+            int previous, face;  // the vertex it was reached from (-1: a corner of a's faces), a face holding it
+        };
+        std::unordered_map<int, Reached> reached;
+        std::unordered_map<int, double> toB;  // corners of b's faces -> their distance to b
+        typedef std::pair<double, int> Entry;
+        std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+        auto relax = [&](int v, double d, int previous, int face) {
+            auto it = reached.find(v);
+            if (it != reached.end() && it->second.dist <= d) return;
+            reached[v] = {d, previous, face};
+            heap.push({d, v});
+        };
+        ForEachFaceOf(b, [&](int f) {
+            for (int k = 0; k < 3; ++k) toB[adj.fv[f][k]] = (P(adj.fv[f][k]) - b.pos).Norm();
+        });
+        ForEachFaceOf(a, [&](int f) {
+            for (int k = 0; k < 3; ++k) relax(adj.fv[f][k], (P(adj.fv[f][k]) - a.pos).Norm(), -1, f);
+        });
+        double best = std::numeric_limits<double>::infinity();
+        int last = -1;
+        while (!heap.empty()) {
+            const Entry e = heap.top();
+            heap.pop();
+            const int v = e.second;
+            const Reached here = reached.at(v);
+            if (e.first > here.dist) continue;  // reached shorter since
+            if (here.dist >= best) break;
+            auto target = toB.find(v);
+            if (target != toB.end() && here.dist + target->second < best) {
+                best = here.dist + target->second;
+                last = v;
+            }
+            adj.ForEachFaceAround(here.face, v, [&](int g, int corner) {
+                for (int w : {adj.fv[g][EmbeddingAdjacency::Next(corner)], adj.fv[g][EmbeddingAdjacency::Prev(corner)]})
+                    relax(w, here.dist + (P(w) - P(v)).Norm(), v, g);
+            });
+        }
+        if (last < 0) return false;
+        for (int v = last; v >= 0; v = reached.at(v).previous) {
+            const int f = reached.at(v).face;
+            path.push_back(VertexPoint(f, adj.CornerOf(f, v)));
+        }
+        std::reverse(path.begin(), path.end());
+        return true;
     }
 
 private:
