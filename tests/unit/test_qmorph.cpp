@@ -382,6 +382,31 @@ TEST(QMorph, AutomaticEdgeLengthKeepsTheInputsResolution)
     }
 }
 
+// With a front, no longer than an eighth of the patches' width 2 A / F: a cube of side 2 with n x n
+// cells per side whose grid lines are all front (every cell a patch) has F = 24 n (each side 2 (n - 1)
+// inner lines of length 2, the 12 cube edges once), so L = (2 * 24 / (24 n)) / 8 = 1 / (4 n), unless
+// that asks for more than 250,000 triangles.
+TEST(QMorph, AutomaticEdgeLengthGivesPatchesRoomForRows)
+{
+    const double equilateral = std::sqrt(3.0) / 4;
+    for (int n : {10, 30}) {  // 1 / 40 (88,682 triangles); 1 / 120 (798,137: the 250,000 bound)
+        TMesh m;
+        MakeCube(m, n);
+        int selected = 0;
+        for (TFace &f : m.face)
+            for (int k = 0; k < 3; ++k) {
+                const P3 d = f.P1(k) - f.P0(k);
+                if ((d[0] != 0) + (d[1] != 0) + (d[2] != 0) == 1) {  // a grid line, not a diagonal
+                    f.SetFaceEdgeS(k);
+                    ++selected;
+                }
+            }
+        ASSERT_EQ(selected, 2 * 12 * n * n) << "every grid edge (12 n^2 of them), from both sides";
+        const double rows = 1.0 / (4 * n), bound = std::sqrt(24 / (equilateral * 250000));
+        EXPECT_NEAR(QM::AutomaticEdgeLength(m), std::max(rows, bound), 1e-5) << n;
+    }
+}
+
 TEST(QMorph, FandiskRemeshedStaysOnItsSurface)
 {
     TMesh m, input;
