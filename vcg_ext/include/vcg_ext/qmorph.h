@@ -188,18 +188,18 @@ public:
     // coarse CAD tessellation of a few hundred slivers has too few triangles to tell its
     // resolution; its features get at least that), and no longer than 1 / kMinRowsAcross of the
     // patches' width 2 A / F (A the area, F the front's length: the side of square patches with
-    // that front): Q-Morph's rows need room (see kMinRowsAcross). But never more than
-    // kMaxAutoTriangles triangles.
+    // that front): Q-Morph's rows need room (see kMinRowsAcross). Neither the input's density nor
+    // the patches' width asks for more than kMaxAutoTriangles triangles.
     static double AutomaticEdgeLength(const MeshType &m)
     {
         vcg::Box3d box;
         for (const VertexType &v : m.vert)
             if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
         const double area = SurfaceArea(m), front = FrontLength(m);
-        const double density = EquilateralSide(area, std::max(1, m.fn));
-        double L = std::min(density, kMaxAutoDiagonalFraction * box.Diag());
+        double L = EquilateralSide(area, std::max(1, m.fn));
         if (front > 0) L = std::min(L, 2 * area / front / kMinRowsAcross);
-        return std::max(L, EquilateralSide(area, kMaxAutoTriangles));
+        L = std::max(L, EquilateralSide(area, kMaxAutoTriangles));
+        return std::min(L, kMaxAutoDiagonalFraction * box.Diag());
     }
 
     // The length of the front (selected edges, each counted once).
