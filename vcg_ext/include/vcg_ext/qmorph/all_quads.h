@@ -104,7 +104,7 @@ public:
         }
         // face centres and the new quads
         std::vector<NewQuad> quads;
-        std::vector<int> firstQuad, centreOf;  // per polygon: its first quad (the others follow) and its centre
+        std::vector<int> firstQuad;  // per polygon: its first quad (the others follow)
         for (size_t i = 0; i < polygons.size(); ++i) {
             const Polygon &p = polygons[i];
             firstQuad.push_back(int(quads.size()));
@@ -113,7 +113,6 @@ public:
             for (int k : byIndex) centre += pos[p.v[k]];
             centre /= double(p.size);
             const int c = int(pos.size());
-            centreOf.push_back(c);
             straight.push_back(centre);
             pos.push_back(OnSurface(surface, centre, normal[i]));
             for (int k : byIndex) {  // the same quads in the same order, whichever way p runs
@@ -126,13 +125,8 @@ public:
         for (int round = 0; round < kUnprojectRounds; ++round) {
             int reverted = 0;
             for (const NewQuad &q : quads) {
-                // from the old corner towards the lower-numbered midpoint: the same array both ways round
-                const bool backwards = q.v[3] < q.v[1];
-                const P3 corners[4] = {pos[q.v[0]], pos[q.v[backwards ? 3 : 1]], pos[q.v[2]], pos[q.v[backwards ? 1 : 3]]};
-                P3 n = VectorArea(corners, 4);
-                if (backwards) n = -n;
-                const P3 centroid = (corners[0] + corners[1] + corners[2] + corners[3]) / 4.0;
-                if (n.Norm() > 0 && surface.NormalUnder(centroid, n / n.Norm()) * n > 0 && !IsFolded(corners)) continue;
+                P3 under;
+                if (StateOf(ChildShape(q, pos), surface, under) == ChildState::Upright) continue;
                 for (int k = 1; k < 4; ++k) {
                     const int x = q.v[k] - int(oldVertices);
                     if (pos[q.v[k]] != straight[x]) {
@@ -148,7 +142,10 @@ public:
         // point, moved to where the worst of them is best
         const Children children{polygons, firstQuad, quads};
         for (size_t i = 0; i < polygons.size(); ++i)
-            if (WorstQuadOf(children, int(i), pos, surface) <= 0) PlaceCentre(children, int(i), pos, straight[centreOf[i] - oldVertices], surface);
+            if (WorstQuadOf(children, int(i), pos, surface) <= 0) {
+                const int centre = quads[firstQuad[i]].v[2];
+                PlaceCentre(children, int(i), pos, straight[centre - oldVertices], surface);
+            }
 
         // m rebuilt: the new points appended, two triangles (faux diagonal) per quad
         auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, pos.size() - oldVertices);
@@ -372,19 +369,44 @@ private:
         return VectorArea(corners, 4);
     }
 
-    // A new quad's quality against the input surface's normal under its centroid: its scaled
-    // Jacobian, -1 when folded or without area (negative: turned over). Corners read from the old
-    // one towards the lower-numbered midpoint, so a flipped copy gets the same value.
+    // A new quad's corners read from the old corner towards the lower-numbered midpoint (the same
+    // array both ways round, so a flipped copy gets the same values) and its own vector area.
+    struct ChildShape {
+        P3 corners[4];
+        P3 area;
+        bool backwards;
+        ChildShape(const NewQuad &q, const std::vector<P3> &pos) : backwards(q.v[3] < q.v[1])
+        {
+            corners[0] = pos[q.v[0]];
+            corners[1] = pos[q.v[backwards ? 3 : 1]];
+            corners[2] = pos[q.v[2]];
+            corners[3] = pos[q.v[backwards ? 1 : 3]];
+            area = VectorArea(corners, 4);  // of the corners as read: the quad's own is the other way when backwards
+            if (backwards) area = -area;
+        }
+    };
+    enum class ChildState { Upright, FoldedOrFlat, TurnedOver };
+
+    // Whether a new quad is folded or without area, turned against the input surface's normal under
+    // its centroid, or upright (then `under` is that normal).
+    static ChildState StateOf(const ChildShape &s, InputSurface<MeshType> &surface, P3 &under)
+    {
+        if (!(s.area.Norm() > 0) || IsFolded(s.corners)) return ChildState::FoldedOrFlat;
+        under = surface.NormalUnder((s.corners[0] + s.corners[1] + s.corners[2] + s.corners[3]) / 4.0, s.area / s.area.Norm());
+        return under * s.area > 0 ? ChildState::Upright : ChildState::TurnedOver;
+    }
+
+    // A new quad's quality against the input surface: its scaled Jacobian with the normal under it,
+    // -1 when folded or without area, kTurnedOver (worse) when turned over.
     static double ChildQuality(const NewQuad &q, const std::vector<P3> &pos, InputSurface<MeshType> &surface)
     {
-        const bool backwards = q.v[3] < q.v[1];
-        const P3 corners[4] = {pos[q.v[0]], pos[q.v[backwards ? 3 : 1]], pos[q.v[2]], pos[q.v[backwards ? 1 : 3]]};
-        P3 n = VectorArea(corners, 4);  // of the corners as read: the quad's own is the other way when backwards
-        if (!(n.Norm() > 0) || IsFolded(corners)) return -1;
-        if (backwards) n = -n;
-        const P3 under = surface.NormalUnder((corners[0] + corners[1] + corners[2] + corners[3]) / 4.0, n / n.Norm());
-        if (!(under * n > 0)) return kTurnedOver;
-        return ScaledJacobian(corners, backwards ? -under : under);
+        const ChildShape s(q, pos);
+        P3 under;
+        switch (StateOf(s, surface, under)) {
+        case ChildState::FoldedOrFlat: return -1;
+        case ChildState::TurnedOver: return kTurnedOver;
+        default: return ScaledJacobian(s.corners, s.backwards ? -under : under);
+        }
     }
 
     // The polygons and their new quads: polygon i's from firstQuad[i] on, one per corner, the
