@@ -116,3 +116,48 @@ TEST(FlippedFaceMend, AFlippedCopyGetsTheSameMoves)
     ASSERT_EQ(straight.size(), mirrored.size());
     for (size_t i = 0; i < straight.size(); ++i) EXPECT_EQ(straight[i], mirrored[i]) << "vertex " << i;
 }
+
+TEST(FlippedFaceMend, AVertexOnTheSheetBehindMovesToTheSheetItsFacesFace)
+{
+    // the input: two sheets 0.1 apart, z = 0 facing +z and z = -0.1 facing -z (fingers side by
+    // side); the output: the upper sheet with a ring of front vertices around (2, 2) sunk to
+    // z = -0.06 and (2, 2) itself on the lower sheet, so its six faces lie nearer the lower sheet
+    // and turn away from it. Its neighbours' centroid is nearer the lower sheet too: only a move onto
+    // the sheet its faces face mends them.
+    TMesh upper, lower, input, m;
+    MakeGrid(upper, 4, 4.f, 0.f, 1, false);
+    MakeGrid(lower, 4, 4.f, 0.f, 1, false);
+    for (TVertex &v : lower.vert) v.P()[2] = -0.1f;
+    for (TFace &f : lower.face) std::swap(f.V(0), f.V(1));
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, upper);
+    vcg::tri::Append<TMesh, TMesh>::Mesh(input, lower);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, upper);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    vcg_ext::InputSurface<TMesh> surface(input);
+
+    TVertex *centre = At(m, 2, 2);
+    std::vector<TVertex *> ring;
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (f.V(k) == centre) {
+                for (TVertex *v : {f.V1(k), f.V2(k)})
+                    if (std::find(ring.begin(), ring.end(), v) == ring.end()) ring.push_back(v);
+            }
+    ASSERT_EQ(ring.size(), 6u);
+    auto inRing = [&](TVertex *v) { return std::find(ring.begin(), ring.end(), v) != ring.end(); };
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (inRing(f.V0(k)) && inRing(f.V1(k))) f.SetFaceEdgeS(k);  // the ring is a front loop
+    for (TVertex *v : ring) v->P()[2] = -0.06f;
+    centre->P()[2] = -0.1f;
+    std::vector<P3> ringBefore;
+    for (TVertex *v : ring) ringBefore.push_back(v->P());
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_GE(st.mended, 1);
+    EXPECT_FLOAT_EQ(centre->P()[2], 0.f) << "the centre is not on the upper sheet";
+    for (size_t i = 0; i < ring.size(); ++i) EXPECT_EQ(ring[i]->P(), ringBefore[i]) << "a front corner moved";
+}

@@ -97,6 +97,17 @@ public:
         return grid.GetClosest(distance, noMarks, p, mesh.bbox.Diag(), dist, closest);
     }
 
+    // The input triangle closest to p among those facing `direction` (normal * direction > 0), or
+    // null: where two sheets of the input lie closer than an output face's chord error (fingers
+    // touching, two bones side by side), the closest point may be on the sheet behind.
+    const FaceType *ClosestFacing(const CoordType &p, const P3 &direction, CoordType &closest)
+    {
+        FacingDistance distance{this, direction};
+        vcg::tri::EmptyTMark<MeshType> noMarks;
+        ScalarType dist = mesh.bbox.Diag();
+        return grid.GetClosest(distance, noMarks, p, mesh.bbox.Diag(), dist, closest);
+    }
+
     // One closest-point search at a point, for the several questions a caller asks there (each
     // search is the cost of those questions); the triangles tied with the closest are searched once
     // too, when a question needs them.
@@ -211,6 +222,19 @@ private:
     static constexpr double kCellsPerFace = 8;
     // A search near a known surface goes a little beyond it (float rounding of the copy).
     static constexpr double kNearSearchSlack = 1.01;
+
+    // vcglib's point-triangle distance, for the triangles facing `direction` only.
+    struct FacingDistance {
+        typedef CoordType QueryType;
+        const InputSurface *surface;
+        P3 direction;
+        static const CoordType &Pos(const CoordType &q) { return q; }
+        bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &q) const
+        {
+            if (!(P3::Construct(surface->Normal(&f)) * direction > 0)) return false;
+            return vcg::face::PointDistanceBase(f, p, minDist, q);
+        }
+    };
 
     // The triangles as close to q as the closest one (at `closest`), up to the tie slack.
     std::vector<FaceType *> TiedWithClosest(const CoordType &q, const CoordType &closest)

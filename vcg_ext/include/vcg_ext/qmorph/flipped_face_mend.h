@@ -3,8 +3,11 @@
 // inverted (a corner turning the other way) or folded, is mended by moving one of its free corners
 // to the centroid of its neighbours, projected onto the input, when that mends it and makes no
 // face around the corner worse: none turned away from an input triangle closest to its centroid,
-// no quad folded or made concave. Corners on the front, on a border or on a sharp crease of the
-// input never move.
+// no quad folded or made concave (scaled Jacobians on the input's normal, as the quality report
+// reads them). Where two sheets of the input lie closer than the faces' chord error (fingers
+// touching: man, two bones side by side: bones), that centroid may project onto the sheet behind;
+// then places around the corner are tried on the sheet the face faces. Corners on the front, on a
+// border or on a sharp crease of the input never move.
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -47,11 +50,14 @@ public:
         const OutputPolygons pg = OutputPolygons::Gather(m);
         auto position = [&](int v) { return P3::Construct(m.vert[v].cP()); };
         auto facesInput = [&](int face) { return pg.FacesInput(face, position, surface); };
-        auto jacobian = [&](int face) {  // of a quad, on its own normal; 1 for a triangle
+        auto jacobian = [&](int face) {  // of a quad, on the input's normal under it (as reported); 1 for a triangle
             if (pg.size[face] < 4) return 1.0;
             P3 q[4];
             pg.Points(face, position, q);
-            return IsFolded(q) ? -1.0 : ScaledJacobian(q);
+            if (IsFolded(q)) return -1.0;
+            const P3 own = VectorArea(q, 4);
+            if (!(own.Norm() > 0)) return -1.0;
+            return ScaledJacobian(q, surface.NormalUnder(pg.Centroid(face, position), own / own.Norm()));
         };
         auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0; };
         Stats st;
@@ -65,11 +71,10 @@ public:
             for (int face : badFaces) {
                 if (!bad(face)) { ++mendedNow; continue; }  // a neighbour's move mended it
                 bool done = false;
+                const P3 faceDirection = pg.VectorArea(face, position);
                 for (int v : pg.CornersByIndex(face)) {  // in index order: the same moves on a flipped copy
                     if (done) break;
                     if (pg.fixed[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
-                    CoordType onSurface;
-                    if (!surface.Closest(CoordType::Construct(pg.NeighbourCentroid(v, position)), onSurface)) continue;
                     // the face mended, and no face around v made worse: none turned over, no quad
                     // folded or made concave (one already bad no worse than before)
                     facedBefore.clear();
@@ -79,13 +84,30 @@ public:
                         jacobianBefore.push_back(std::min(kConvex, jacobian(g)));
                     }
                     const CoordType old = m.vert[v].cP();
-                    m.vert[v].P() = onSurface;
-                    done = !bad(face);
-                    for (size_t i = 0; i < pg.facesOf[v].size() && done; ++i) {
-                        const int g = pg.facesOf[v][i];
-                        done = (facesInput(g) || !facedBefore[i]) && jacobian(g) >= jacobianBefore[i];
+                    auto tryPlace = [&](const CoordType &place) {
+                        m.vert[v].P() = place;
+                        bool mended = !bad(face);
+                        for (size_t i = 0; i < pg.facesOf[v].size() && mended; ++i) {
+                            const int g = pg.facesOf[v][i];
+                            mended = (facesInput(g) || !facedBefore[i]) && jacobian(g) >= jacobianBefore[i];
+                        }
+                        if (!mended) m.vert[v].P() = old;
+                        return mended;
+                    };
+                    // its neighbours' centroid moved onto the input (what mends most); then, where
+                    // the sheet under the face is not the one it faces (two sheets of the input
+                    // closer than the face's chord error), that place and steps toward and away from
+                    // each neighbour moved onto the sheet the face faces
+                    const P3 centroid = pg.NeighbourCentroid(v, position);
+                    CoordType onSurface;
+                    if (surface.Closest(CoordType::Construct(centroid), onSurface)) done = tryPlace(onSurface);
+                    if (done || !(faceDirection.Norm() > 0)) continue;
+                    for (const P3 &place : Places(pg, v, position, centroid)) {
+                        if (surface.ClosestFacing(CoordType::Construct(place), faceDirection, onSurface) && tryPlace(onSurface)) {
+                            done = true;
+                            break;
+                        }
                     }
-                    if (!done) m.vert[v].P() = old;
                 }
                 mendedNow += done;
             }
@@ -98,11 +120,25 @@ public:
     }
 
 private:
+    // Where a free corner v is tried on the sheet its face faces: its neighbours' centroid, where
+    // it is, and steps toward and away from each neighbour.
+    template <class Position>
+    static std::vector<P3> Places(const OutputPolygons &pg, int v, Position position, const P3 &centroid)
+    {
+        const P3 here = position(v);
+        std::vector<P3> places{centroid, here};
+        for (int w : pg.Neighbours(v))
+            for (double step : kSteps) places.push_back(here + (position(w) - here) * step);
+        return places;
+    }
+
     // Rounds over the faces still flipped: a tangle may need a neighbour moved first.
     static constexpr int kRounds = 4;
     // A move may leave a quad around the corner at any scaled Jacobian down to this (a convex
     // quad, its corners turning the same way), or no lower than it was.
     static constexpr double kConvex = 1e-3;
+    // Steps toward (and away from) a neighbour, as fractions of the way to it.
+    static constexpr double kSteps[4] = {0.25, 0.5, -0.25, 0.75};
 };
 
 }  // namespace qmorph
