@@ -161,3 +161,53 @@ TEST(FlippedFaceMend, AVertexOnTheSheetBehindMovesToTheSheetItsFacesFace)
     EXPECT_FLOAT_EQ(centre->P()[2], 0.f) << "the centre is not on the upper sheet";
     for (size_t i = 0; i < ring.size(); ++i) EXPECT_EQ(ring[i]->P(), ringBefore[i]) << "a front corner moved";
 }
+
+TEST(FlippedFaceMend, AFlatTriangleUnderATentIsSplitOnTheSheetItFaces)
+{
+    // the input: a shell, a tent over [0,4]^2 (apex (2, 2) at z = 0.5, facing +z) and the same
+    // tent 0.6 below it facing -z; the output: one flat triangle with its corners on the upper
+    // tent's foot. Its centroid lies 0.27 under the upper tent and 0.22 over the lower one, so it
+    // counts as flipped, and no corner may move (all on the border): it is split in three at the
+    // point of the upper tent nearest its centroid, each child nearer the upper tent (the flat
+    // child's centroids: 0.25 or less under it), the front side kept.
+    TMesh upper, lower, input, m;
+    MakeGrid(upper, 4, 4.f, 0.f, 1, false);
+    At(upper, 2, 2)->P()[2] = 0.5f;
+    MakeGrid(lower, 4, 4.f, 0.f, 1, false);
+    At(lower, 2, 2)->P()[2] = 0.5f;
+    for (TVertex &v : lower.vert) v.P()[2] -= 0.6f;
+    for (TFace &f : lower.face) std::swap(f.V(0), f.V(1));
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, upper);
+    vcg::tri::Append<TMesh, TMesh>::Mesh(input, lower);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    Build(m, {P3(1, 1, 0), P3(3, 1, 0), P3(2, 3, 0)}, {{0, 1, 2}});
+    m.face[0].Q() = 7;                  // the region id, which the children keep
+    m.face[0].SetFaceEdgeS(0);          // (1, 1) - (3, 1): a front side
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(st.split, 1);
+    EXPECT_EQ(st.left, 0);
+    ASSERT_EQ(m.fn, 3);
+    ASSERT_EQ(m.vn, 4);
+    ASSERT_EQ(st.splitNormals.size(), 2u);
+    const P3 centre = m.vert[3].P();
+    EXPECT_GT(centre[2], 0.2f) << "the new point is not on the upper tent";
+    int frontSides = 0;
+    for (TFace &f : m.face) {
+        const P3 n = vcg::TriangleNormal(f);
+        EXPECT_GT(n[2], 0.f) << "a child turned over";
+        EXPECT_TRUE(surface.FacesEveryClosest(vcg::Point3d::Construct(vcg::Barycenter(f)), vcg::Point3d::Construct(n))) << "a child still faces the sheet behind";
+        EXPECT_EQ(f.Q(), 7.f);
+        for (int k = 0; k < 3; ++k)
+            if (f.IsFaceEdgeS(k)) {
+                ++frontSides;
+                EXPECT_EQ(f.P0(k)[1], 1.f);
+                EXPECT_EQ(f.P1(k)[1], 1.f);
+            }
+        for (int k = 0; k < 3; ++k) EXPECT_NE(f.FFp(k), nullptr);
+    }
+    EXPECT_EQ(frontSides, 1) << "the front side was lost or copied";
+}

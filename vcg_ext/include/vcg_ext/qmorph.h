@@ -145,7 +145,8 @@ public:
                    (shape.moves ? Format("; worst elements raised: %d corners moved, elements below 0.3 %d -> %d", shape.moves,
                                          shape.poorBefore, shape.poorAfter)
                                 : std::string()) +
-                   (mend.mended ? Format("; %d faces found flipped or inverted at the end and turned back", mend.mended) : std::string());
+                   (mend.mended ? Format("; %d faces found flipped or inverted at the end and turned back", mend.mended) : std::string()) +
+                   (mend.split ? Format(" (%d triangles split on the sheet they face)", mend.split) : std::string());
         }
     };
 
@@ -393,6 +394,8 @@ private:
         if (q.flippedFaces || q.invertedQuads || q.foldedQuads) {  // the last check, only when needed
             Progress(cb, 99, "Q-Morph: flipped faces");
             res.mend = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg);
+            out.referenceNormals.insert(out.referenceNormals.end(), res.mend.splitNormals.begin(), res.mend.splitNormals.end());
+            res.triangles += 2 * res.mend.split;
             if (res.mend.mended) res.quality = measure();
         }
     }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/polygon_geometry.h>
@@ -40,7 +41,9 @@ public:
 
     struct Stats {
         int mended = 0;  // flipped faces and inverted quads found and turned back
+        int split = 0;   // of those, triangles split in three on the sheet they face
         int left = 0;    // those no move could mend
+        std::vector<P3> splitNormals;  // per face added by the splits (appended to m.face, two per split): the normal it faces
     };
 
     // m in MeshLab's polygonal form (faux-edge quads), with face-face adjacency; front edges are
@@ -114,12 +117,71 @@ public:
             st.mended += mendedNow;
             if (mendedNow == 0) break;
         }
+        std::vector<int> leftTriangles;
         st.left = 0;
-        for (int face = 0; face < pg.FaceCount(); ++face) st.left += bad(face);
+        for (int face = 0; face < pg.FaceCount(); ++face)
+            if (bad(face)) {
+                ++st.left;
+                if (pg.size[face] == 3) leftTriangles.push_back(pg.face[face]);
+            }
+        for (int f : leftTriangles)
+            if (SplitOnFacedSheet(m, f, surface, st.splitNormals)) ++st.split;
+        st.mended += st.split;
+        st.left -= st.split;
+        if (st.split) {
+            vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+            if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+        }
         return st;
     }
 
 private:
+    typedef typename MeshType::FaceType FaceType;
+
+    // A triangle no move mends (a flat triangle over a flap of the input thinner than its chord
+    // error: its centroid nearer the sheet behind, its corners on the sheet it faces) split in three
+    // at the point of the sheet it faces nearest its centroid, when the three children face the
+    // input. f keeps its first side; the two new faces go at the end of m.face, their normals (the
+    // sheet's) at the end of `normals`. Front and faux flags of the three old sides are kept.
+    static bool SplitOnFacedSheet(MeshType &m, int f, InputSurface<MeshType> &surface, std::vector<P3> &normals)
+    {
+        const P3 p[3] = {P3::Construct(m.face[f].cP(0)), P3::Construct(m.face[f].cP(1)), P3::Construct(m.face[f].cP(2))};
+        const P3 direction = (p[1] - p[0]) ^ (p[2] - p[0]);
+        CoordType onSheet;
+        const FaceType *under = surface.ClosestFacing(CoordType::Construct((p[0] + p[1] + p[2]) / 3.0), direction, onSheet);
+        if (!under) return false;
+        const P3 c = P3::Construct(onSheet);
+        for (int k = 0; k < 3; ++k) {  // child k: side k and the new point
+            const P3 a = p[k], b = p[(k + 1) % 3];
+            const P3 area = (b - a) ^ (c - a);
+            if (!(area.Norm() > 0) || !surface.FacesEveryClosest((a + b + c) / 3.0, area)) return false;
+        }
+        const int v[3] = {int(vcg::tri::Index(m, m.face[f].V(0))), int(vcg::tri::Index(m, m.face[f].V(1))), int(vcg::tri::Index(m, m.face[f].V(2)))};
+        const int centre = int(m.vert.size());
+        vcg::tri::Allocator<MeshType>::AddVertices(m, 1)->P() = onSheet;
+        const int first = int(m.face.size());
+        vcg::tri::Allocator<MeshType>::AddFaces(m, 2);
+        for (int k = 1; k < 3; ++k) {  // children 1 and 2: copies of f with their side's flags
+            FaceType &child = m.face[first + k - 1];
+            child.ImportData(m.face[f]);
+            child.V(0) = &m.vert[v[k]];
+            child.V(1) = &m.vert[v[(k + 1) % 3]];
+            child.V(2) = &m.vert[centre];
+            for (int e = 1; e < 3; ++e) ClearSide(child, e);
+            if (m.face[f].IsFaceEdgeS(k)) child.SetFaceEdgeS(0); else child.ClearFaceEdgeS(0);
+            if (m.face[f].IsF(k)) child.SetF(0); else child.ClearF(0);
+            normals.push_back(P3::Construct(surface.Normal(under)));
+        }
+        m.face[f].V(2) = &m.vert[centre];
+        for (int e = 1; e < 3; ++e) ClearSide(m.face[f], e);
+        return true;
+    }
+    static void ClearSide(FaceType &f, int e)
+    {
+        f.ClearFaceEdgeS(e);
+        f.ClearF(e);
+    }
+
     // Where a free corner v is tried on the sheet its face faces: its neighbours' centroid, where
     // it is, and steps toward and away from each neighbour.
     template <class Position>

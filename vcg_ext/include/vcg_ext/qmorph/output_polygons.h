@@ -25,6 +25,7 @@ struct OutputPolygons {
 
     std::vector<std::array<int, 4>> corners;  // vertex indices, counter-clockwise
     std::vector<int> size;                    // 3 or 4
+    std::vector<int> face;                    // one of its faces of m (a triangle's own)
     std::vector<std::vector<int>> facesOf;    // per vertex
     std::vector<char> fixed;                  // per vertex: on a front edge (selected face-edge) or a border
 
@@ -34,10 +35,11 @@ struct OutputPolygons {
     {
         OutputPolygons pg;
         pg.facesOf.resize(m.vert.size());
-        QuadQuality::ForEachFauxPolygon(m, [&](typename MeshType::FaceType &, const std::array<int, 4> &c, int n) {
+        QuadQuality::ForEachFauxPolygon(m, [&](typename MeshType::FaceType &f, const std::array<int, 4> &c, int n) {
             for (int k = 0; k < n; ++k) pg.facesOf[c[k]].push_back(int(pg.size.size()));
             pg.corners.push_back(c);
             pg.size.push_back(n);
+            pg.face.push_back(int(vcg::tri::Index(m, f)));
         });
         pg.fixed.assign(m.vert.size(), 0);
         for (const auto &f : m.face)
