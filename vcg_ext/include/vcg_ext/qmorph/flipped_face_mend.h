@@ -57,10 +57,8 @@ public:
             if (pg.size[face] < 4) return 1.0;
             P3 q[4];
             pg.Points(face, position, q);
-            if (IsFolded(q)) return -1.0;
-            const P3 own = VectorArea(q, 4);
-            if (!(own.Norm() > 0)) return -1.0;
-            return ScaledJacobian(q, surface.NormalUnder(pg.Centroid(face, position), own / own.Norm()));
+            if (IsFolded(q) || !(VectorArea(q, 4).Norm() > 0)) return -1.0;
+            return ScaledJacobian(q, pg.NormalUnder(face, position, surface));
         };
         auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0; };
         Stats st;

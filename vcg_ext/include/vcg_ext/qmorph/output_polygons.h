@@ -74,6 +74,15 @@ struct OutputPolygons {
         return c / double(size[face]);
     }
 
+    // The input's unit normal under `face`'s centroid (InputSurface::NormalUnder; its own direction
+    // where that is ambiguous): what the quality report judges it on.
+    template <class Position, class Surface>
+    P3 NormalUnder(int face, Position position, Surface &surface) const
+    {
+        const P3 own = VectorArea(face, position);
+        return surface.NormalUnder(Centroid(face, position), own.Norm() > 0 ? own / own.Norm() : own);
+    }
+
     // Whether `face` has an area and faces the way of every input triangle closest to its centroid
     // (InputSurface::FacesEveryClosest): the two passes' test for a face turned over.
     template <class Position, class Surface>

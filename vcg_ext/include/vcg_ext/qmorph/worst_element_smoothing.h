@@ -47,10 +47,7 @@ public:
     {
         const OutputPolygons pg = OutputPolygons::Gather(m);
         auto position = [&](int v) { return P3::Construct(m.vert[v].cP()); };
-        auto normalUnder = [&](int face) {
-            const P3 own = pg.VectorArea(face, position);
-            return surface.NormalUnder(pg.Centroid(face, position), own.Norm() > 0 ? own / own.Norm() : own);
-        };
+        auto normalUnder = [&](int face) { return pg.NormalUnder(face, position, surface); };
         auto facesInput = [&](int face) { return pg.FacesInput(face, position, surface); };
         std::vector<signed char> free(m.vert.size(), -1);  // -1: not known yet
         auto isFree = [&](int v) {
