@@ -97,6 +97,16 @@ public:
         return grid.GetClosest(distance, noMarks, p, mesh.bbox.Diag(), dist, closest);
     }
 
+    // The input triangle closest to p if it lies within maxDistance of p (its closest point in
+    // `closest`), or null.
+    const FaceType *ClosestWithin(const CoordType &p, double maxDistance, CoordType &closest)
+    {
+        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        vcg::tri::EmptyTMark<MeshType> noMarks;
+        ScalarType dist = ScalarType(maxDistance);
+        return grid.GetClosest(distance, noMarks, p, ScalarType(maxDistance), dist, closest);
+    }
+
     // The input triangle closest to p among those facing `direction` (normal * direction > 0), or
     // null: where two sheets of the input lie closer than an output face's chord error (fingers
     // touching, two bones side by side), the closest point may be on the sheet behind.

@@ -1,15 +1,18 @@
 // Isotropic re-meshing of the whole mesh before Q-Morph (Botsch-Kobbelt: split, collapse, flip
-// toward valence 6, tangential relaxation, projection on the input), with vcglib's IsotropicRemeshing
-// for the splits and flips,
-// keeping the front (selected face-edges) and the sharp creases as exact chains of output edges.
+// toward valence 6, tangential relaxation, projection on the input), keeping the front (selected
+// face-edges) and the sharp creases as exact chains of output edges.
 //
-// How the 2020.09 remesher is driven so that features stay where they are:
-// - features (front and unselected sharp creases) are its "user selected creases" (FaceEdgeS with
-//   userSelectedCreases): they are never flipped, their vertices never relaxed, and a split of a
-//   feature edge puts the new vertex at its midpoint, on the feature;
+// What is taken from vcglib 2020.09's IsotropicRemeshing, and what is not, so that features stay
+// where they are:
+// - features (front and unselected sharp creases) are selected face-edges (FaceEdgeS, as its "user
+//   selected creases"): never flipped, their vertices never relaxed;
+// - its split step is RefineMidpoint with a length test, called directly (SplitLongEdges): a split
+//   feature edge's new vertex is its midpoint, on the feature;
 // - its collapses are judged against the faces before, not the input, may slide a feature vertex
 //   along a nearly straight feature and never coarsen a feature (so a fine front kept rings of small
 //   triangles): ShortEdgeCollapse instead, which coarsens feature chains along their curve;
+// - its flips read valences from stars it does not update and cost a third of the re-meshing:
+//   ValenceFlips, its rule with valences kept in an array, instead;
 // - its smoothing can turn faces over: a relaxation of our own, checked against the input, instead;
 // - no clean-up pass (it would delete and compact faces with its own rules).
 // Afterwards the front is re-selected: an output edge is front when the original edge it lies on
@@ -31,7 +34,7 @@
 #include <vector>
 
 #include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/isotropic_remeshing.h>
+#include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/selection.h>
 #include <vcg/complex/algorithms/update/topology.h>
@@ -43,6 +46,7 @@
 #include <vcg_ext/common/segment_grid.h>
 #include <vcg_ext/qmorph/facing_features.h>
 #include <vcg_ext/qmorph/short_edge_collapse.h>
+#include <vcg_ext/qmorph/valence_flips.h>
 
 namespace vcg_ext {
 namespace qmorph {
@@ -54,7 +58,6 @@ public:
     typedef typename MeshType::FaceType FaceType;
     typedef typename MeshType::VertexType VertexType;
     typedef typename MeshType::ScalarType ScalarType;
-    typedef vcg::tri::IsotropicRemeshing<MeshType> Remesher;
     typedef typename MeshType::CoordType CoordType;
     typedef vcg::Point3d P3;
     typedef typename ShortEdgeCollapse<MeshType>::FeatureKind FeatureKind;
@@ -90,13 +93,8 @@ public:
         auto featureOf = [&](const P3 &a, const P3 &b) { return FeatureAt(features, kinds, a, b); };
         auto toFeatures = [&](const P3 &a, const P3 &b) { return CurveDeviation(features, a, b, L); };
 
-        typename Remesher::Params p;
-        p.SetTargetLen(ScalarType(L));
-        p.userSelectedCreases = true;
-        p.cleanFlag = false;
-        p.surfDistCheck = true;
-        p.maxSurfDist = ScalarType(kSurfaceDistance * L);
-        p.iter = 1;
+        // vcglib's split length (IsotropicRemeshing::Params::SetTargetLen), in its scalar type
+        const ScalarType maxLength = ScalarType(L) * ScalarType(4. / 3.);
         for (int it = 0; it < iterations; ++it) {
             // each step of each round reports (the collapses of the first round on a big scan, which
             // remove most of its faces, report as they go)
@@ -108,9 +106,12 @@ public:
                 cb(int(progressTo * (it + done) / iterations), what);
             };
             progress(0, "splits");
-            // split toward no edge longer than 4/3 L (see kMaxSplitPasses); vcglib's pass costs a
-            // grid over the whole input even when it has nothing to split, so it is skipped then
-            for (int pass = 0; pass < kMaxSplitPasses && HasLongEdge(m, p) && Pass(m, surface.mesh, p, st, true, false) > 0; ++pass) {}
+            // split toward no edge longer than 4/3 L (see kMaxSplitPasses)
+            for (int pass = 0; pass < kMaxSplitPasses && HasLongEdge(m, maxLength); ++pass) {
+                const int splits = SplitLongEdges(m, maxLength);
+                st.splits += splits;
+                if (splits == 0) break;
+            }
             progress(kCollapseStart, "collapses");
             st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, featureOf, toFeatures, [&](double done) {
                 char step[48];
@@ -118,10 +119,9 @@ public:
                 progress(kCollapseStart + done * (kFlipStart - kCollapseStart), step);
             });
             progress(kFlipStart, "flips");
-            Pass(m, surface.mesh, p, st, false, true);  // flip toward valence 6
+            st.flips += ValenceFlips<MeshType>::Do(m, surface, kSurfaceDistance * L);
             progress(kRelaxStart, "relaxation");
-            vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
-            vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+            vcg::tri::UpdateTopology<MeshType>::VertexFace(m);  // the flips kept face-face adjacency only
             const std::vector<char> fixed = FeatureVertices(m);
             for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed);
         }
@@ -154,11 +154,10 @@ private:
     // armadillo x16's first round: splits 4 s, collapses 14 s, flips 1.4 s, relaxation 1.3 s).
     static constexpr double kCollapseStart = 0.2, kFlipStart = 0.8, kRelaxStart = 0.9;
 
-    // Whether vcglib's split pass would split anything: an edge longer than its maxLength, by its
-    // own test (EdgeSplitLenPred, squared lengths in the mesh's scalar type).
-    static bool HasLongEdge(const MeshType &m, const typename Remesher::Params &p)
+    // Whether SplitLongEdges would split anything.
+    static bool HasLongEdge(const MeshType &m, ScalarType maxLength)
     {
-        const ScalarType limit = p.maxLength * p.maxLength;
+        const ScalarType limit = maxLength * maxLength;
         for (const FaceType &f : m.face)
             if (!f.IsD())
                 for (int i = 0; i < 3; ++i)
@@ -312,18 +311,25 @@ private:
         vcg::tri::UpdateNormal<MeshType>::PerFace(m);
     }
 
-    // One vcglib pass; returns how many edges it split.
-    static int Pass(MeshType &m, MeshType &surface, typename Remesher::Params &p, Stats &st, bool split, bool flip)
+    // vcglib's split step: RefineMidpoint with IsotropicRemeshing's length test (EdgeSplitLenPred:
+    // squared lengths in the mesh's scalar type), called directly, as IsotropicRemeshing::Do would
+    // also build a grid over the whole input and rate every face for creases at each pass. A split
+    // feature edge's halves stay features (RefineMidpoint copies the face-edge flags). Needs
+    // face-face adjacency and keeps it valid. Returns the number of edges split.
+    static int SplitLongEdges(MeshType &m, ScalarType maxLength)
     {
-        p.splitFlag = split;
-        p.collapseFlag = false;
-        p.selectedOnly = false;
-        p.swapFlag = flip;
-        p.smoothFlag = p.projectFlag = false;  // Relax instead: vcglib's smoothing can turn faces over
-        Remesher::Do(m, surface, p);
-        st.splits += p.stat.splitNum;
-        st.flips += p.stat.flipNum;
-        return p.stat.splitNum;
+        struct LongerThanMax {
+            ScalarType squaredMax;
+            int count = 0;
+            bool operator()(vcg::face::Pos<FaceType> &ep)
+            {
+                if (!(vcg::SquaredDistance(ep.V()->P(), ep.VFlip()->P()) > squaredMax)) return false;
+                ++count;
+                return true;
+            }
+        } longer{maxLength * maxLength};
+        vcg::tri::RefineMidpoint(m, longer);
+        return longer.count;
     }
 
     static bool IsFeature(const FaceType &f, int i) { return FacingFeatures<MeshType>::IsFeature(f, i); }

@@ -82,14 +82,14 @@ public:
     static constexpr size_t kProgressVertices = 1 << 15;
 
     // One pass over the vertices; features are the selected face-edges (flagged on both sides, a
-    // border edge on its one side). Needs vertex-face adjacency; face-face adjacency is rebuilt.
+    // border edge on its one side). Needs face-face adjacency (rebuilt at the end); vertex-face
+    // adjacency is rebuilt first.
     // `progress` (optional) gets the fraction of the vertices visited, every kProgressVertices.
     // Returns the number of collapses.
     static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureOf &featureOf,
                   const CurveDeviation &toCurves, const std::function<void(double)> &progress = {})
     {
         vcg::tri::RequireVFAdjacency(m);
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         std::vector<char> border(m.vert.size(), 0);
         for (FaceType &f : m.face)
             if (!f.IsD())
