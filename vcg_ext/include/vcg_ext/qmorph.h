@@ -76,7 +76,8 @@ public:
         bool allQuads = false;             // no triangle left: every face split into quads at the end
                                            // (qmorph/all_quads.h), after re-meshing at twice a length given
                                            // (at the automatic length itself: see RemeshLength)
-        int threads = 0;                   // patches meshed at once: 0 = the machine's cores (same output)
+        int threads = 0;                   // patches meshed at once (and the re-meshing's searches): 0 = the
+                                           // machine's cores (same output)
         bool planFrontNodes = true;        // side edges at initial-front nodes planned over all their
                                            // patches (qmorph/front_node_plan.h); off: each patch decides
 
@@ -287,7 +288,7 @@ private:
         if (res.targetEdgeLength > 0) {
             const auto t0 = std::chrono::steady_clock::now();
             res.remesh = qmorph::FeatureRemesh<MeshType>::Do(m, input, res.targetEdgeLength, par.remeshIterations, par.creaseAngleDeg,
-                                                             cb, kRemeshProgress);
+                                                             cb, kRemeshProgress, ThreadCount(par.threads));
             res.remeshSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         }
         const int patchesFrom = res.targetEdgeLength > 0 ? kRemeshProgress : 1;

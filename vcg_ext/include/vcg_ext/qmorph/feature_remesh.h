@@ -43,6 +43,7 @@
 #include <vcg_ext/common/edge_flip.h>
 #include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/common/input_surface.h>
+#include <vcg_ext/common/parallel.h>
 #include <vcg_ext/common/segment_grid.h>
 #include <vcg_ext/qmorph/facing_features.h>
 #include <vcg_ext/qmorph/short_edge_collapse.h>
@@ -75,7 +76,7 @@ public:
     // `surface`: the input, as it is now (vertices are projected back onto it). Progress goes from
     // 0 to progressTo percent.
     static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double L, int iterations, double creaseAngleDeg,
-                    vcg::CallBackPos *cb = nullptr, int progressTo = 100)
+                    vcg::CallBackPos *cb = nullptr, int progressTo = 100, int threads = 1)
     {
         vcg::tri::RequireVFAdjacency(m);
         vcg::tri::RequirePerVertexMark(m);
@@ -123,7 +124,7 @@ public:
             progress(kRelaxStart, "relaxation");
             vcg::tri::UpdateTopology<MeshType>::VertexFace(m);  // the flips kept face-face adjacency only
             const std::vector<char> fixed = FeatureVertices(m);
-            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed);
+            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed, threads);
         }
         if (cb) cb(progressTo, "Q-Morph: re-meshing, feature strips");
         st.facingSplits = FacingFeatures<MeshType>::Do(m, L);
@@ -178,13 +179,39 @@ private:
         return onFeature;
     }
 
+    // Per vertex off the features, the input triangle closest to it (null for the others). A sweep
+    // moves each vertex only at its own turn, so these are the ones under it at that turn: the
+    // searches, most of a sweep's cost, run on `threads` threads first (the same answers with any
+    // number of threads).
+    static std::vector<const FaceType *> InputUnderVertices(MeshType &m, InputSurface<MeshType> &surface,
+                                                            const std::vector<char> &fixed, int threads)
+    {
+        std::vector<const FaceType *> under(m.vert.size(), nullptr);
+        const size_t chunks = (m.vert.size() + kVerticesPerChunk - 1) / kVerticesPerChunk;
+        OrderedParallelFor<int>(
+            chunks, threads, {},
+            [&](size_t chunk) {
+                const size_t end = std::min(m.vert.size(), (chunk + 1) * kVerticesPerChunk);
+                for (size_t i = chunk * kVerticesPerChunk; i < end; ++i) {  // each chunk writes its own entries
+                    if (m.vert[i].IsD() || fixed[i]) continue;
+                    CoordType onSurface;
+                    under[i] = surface.Closest(m.vert[i].cP(), onSurface);
+                }
+                return 0;
+            },
+            [](size_t, int &&) {}, [] {});
+        return under;
+    }
+    static constexpr size_t kVerticesPerChunk = 4096;
+
     // Tangential relaxation (Botsch-Kobbelt): each vertex off the features moves toward the area-
     // weighted centroid of its star, in the tangent plane, then onto the input surface. A move is
     // kept only when no face of the star turns over, against the input surface's normal under the
     // new place or against its own normal before, and the star's worst triangle stays fair. Needs
     // vertex-face adjacency; `fixed`: FeatureVertices (both unchanged by it: it only moves vertices).
-    static void Relax(MeshType &m, InputSurface<MeshType> &surface, const std::vector<char> &fixed)
+    static void Relax(MeshType &m, InputSurface<MeshType> &surface, const std::vector<char> &fixed, int threads)
     {
+        const std::vector<const FaceType *> underStart = InputUnderVertices(m, surface, fixed, threads);
         std::vector<FaceType *> star;
         std::vector<int> corner;
         std::vector<CoordType> normalsBefore;
@@ -201,7 +228,7 @@ private:
             }
             if (!(area > 0)) continue;
             CoordType onSurface;
-            const FaceType *under = surface.Closest(v.cP(), onSurface);
+            const FaceType *under = underStart[vcg::tri::Index(m, &v)];
             if (!under) continue;
             const CoordType n = surface.Normal(under);
             CoordType move = centroid / area - v.cP();
