@@ -85,16 +85,9 @@ public:
     // surface that close), then everywhere.
     const FaceType *Closest(const CoordType &p, CoordType &closest, double within = -1)
     {
-        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
-        vcg::tri::EmptyTMark<MeshType> noMarks;
-        ScalarType dist = 0;
-        if (within >= 0) {
-            const ScalarType radius = ScalarType(within * kNearSearchSlack + kTieDiagonal * mesh.bbox.Diag());
-            dist = radius;
-            if (const FaceType *f = grid.GetClosest(distance, noMarks, p, radius, dist, closest)) return f;
-        }
-        dist = mesh.bbox.Diag();
-        return grid.GetClosest(distance, noMarks, p, mesh.bbox.Diag(), dist, closest);
+        if (within >= 0)
+            if (const FaceType *f = ClosestWithin(p, within * kNearSearchSlack + kTieDiagonal * mesh.bbox.Diag(), closest)) return f;
+        return ClosestWithin(p, mesh.bbox.Diag(), closest);
     }
 
     // The input triangle closest to p if it lies within maxDistance of p (its closest point in

@@ -108,11 +108,7 @@ public:
             };
             progress(0, "splits");
             // split toward no edge longer than 4/3 L (see kMaxSplitPasses)
-            for (int pass = 0; pass < kMaxSplitPasses && HasLongEdge(m, maxLength); ++pass) {
-                const int splits = SplitLongEdges(m, maxLength);
-                st.splits += splits;
-                if (splits == 0) break;
-            }
+            for (int pass = 0; pass < kMaxSplitPasses && HasLongEdge(m, maxLength); ++pass) st.splits += SplitLongEdges(m, maxLength);
             progress(kCollapseStart, "collapses");
             st.collapses += ShortEdgeCollapse<MeshType>::Do(m, surface, L, featureOf, toFeatures, [&](double done) {
                 char step[48];
@@ -155,14 +151,20 @@ private:
     // armadillo x16's first round: splits 4 s, collapses 14 s, flips 1.4 s, relaxation 1.3 s).
     static constexpr double kCollapseStart = 0.2, kFlipStart = 0.8, kRelaxStart = 0.9;
 
-    // Whether SplitLongEdges would split anything.
+    // The split test (IsotropicRemeshing's EdgeSplitLenPred: squared lengths in the mesh's scalar type).
+    static bool LongerThan(const CoordType &a, const CoordType &b, ScalarType maxLength)
+    {
+        return vcg::SquaredDistance(a, b) > maxLength * maxLength;
+    }
+
+    // Whether SplitLongEdges would split anything (RefineMidpoint rebuilds the face-face adjacency
+    // even when it splits nothing).
     static bool HasLongEdge(const MeshType &m, ScalarType maxLength)
     {
-        const ScalarType limit = maxLength * maxLength;
         for (const FaceType &f : m.face)
             if (!f.IsD())
                 for (int i = 0; i < 3; ++i)
-                    if (vcg::SquaredDistance(f.cP0(i), f.cP1(i)) > limit) return true;
+                    if (LongerThan(f.cP0(i), f.cP1(i), maxLength)) return true;
         return false;
     }
 
@@ -338,23 +340,23 @@ private:
         vcg::tri::UpdateNormal<MeshType>::PerFace(m);
     }
 
-    // vcglib's split step: RefineMidpoint with IsotropicRemeshing's length test (EdgeSplitLenPred:
-    // squared lengths in the mesh's scalar type), called directly, as IsotropicRemeshing::Do would
-    // also build a grid over the whole input and rate every face for creases at each pass. A split
-    // feature edge's halves stay features (RefineMidpoint copies the face-edge flags). Needs
-    // face-face adjacency and keeps it valid. Returns the number of edges split.
+    // vcglib's split step: RefineMidpoint with the remesher's length test (LongerThan), called
+    // directly, as IsotropicRemeshing::Do would also build a grid over the whole input and rate
+    // every face for creases at each pass. A split feature edge's halves stay features
+    // (RefineMidpoint copies the face-edge flags). Needs face-face adjacency and keeps it valid.
+    // Returns the number of edges split.
     static int SplitLongEdges(MeshType &m, ScalarType maxLength)
     {
         struct LongerThanMax {
-            ScalarType squaredMax;
+            ScalarType maxLength;
             int count = 0;
             bool operator()(vcg::face::Pos<FaceType> &ep)
             {
-                if (!(vcg::SquaredDistance(ep.V()->P(), ep.VFlip()->P()) > squaredMax)) return false;
+                if (!LongerThan(ep.V()->P(), ep.VFlip()->P(), maxLength)) return false;
                 ++count;
                 return true;
             }
-        } longer{maxLength * maxLength};
+        } longer{maxLength};
         vcg::tri::RefineMidpoint(m, longer);
         return longer.count;
     }
