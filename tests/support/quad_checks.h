@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <vcg/complex/algorithms/closest.h>
+#include <vcg_ext/common/point_face_distance.h>
 #include <vcg/space/index/grid_static_ptr.h>
 
 #include "test_mesh.h"
@@ -48,7 +49,7 @@ inline double Volume(const TMesh &m)
 }
 
 // Largest distance from the samples of `from` (vertices, edge midpoints, face centroids) to the
-// surface of `to` (closest point on a triangle, vcg's static grid).
+// surface of `to` (the exact closest point on a triangle, vcg's static grid).
 inline double OneSidedDistance(const TMesh &from, TMesh &to)
 {
     typedef vcg::GridStaticPtr<TFace, float> Grid;
@@ -57,11 +58,13 @@ inline double OneSidedDistance(const TMesh &from, TMesh &to)
     Grid grid;
     grid.Set(to.face.begin(), to.face.end());
     const float maxDist = to.bbox.Diag();
+    vcg_ext::PointFaceDistance<TFace> exactDistance;
+    vcg::tri::EmptyTMark<TMesh> noMarks;
     double worst = 0;
     auto probe = [&](const P3 &s) {
         float dist = maxDist;
         P3 closest;
-        vcg::tri::GetClosestFaceBase(to, grid, s, maxDist, dist, closest);
+        grid.GetClosest(exactDistance, noMarks, s, maxDist, dist, closest);
         worst = std::max(worst, double(dist));
     };
     for (const auto &v : from.vert)
@@ -97,6 +100,8 @@ inline FlipCount FlippedFaces(const vcg_ext::PolygonMesh &pm, TMesh &input)
     };
     Grid grid;
     grid.Set(input.face.begin(), input.face.end());
+    vcg_ext::PointFaceDistance<TFace> exactDistance;
+    vcg::tri::EmptyTMark<TMesh> noMarks;
     FlipCount c;
     for (const auto &f : pm.faces) {
         D3 centroid(0, 0, 0), area(0, 0, 0);
@@ -106,7 +111,7 @@ inline FlipCount FlippedFaces(const vcg_ext::PolygonMesh &pm, TMesh &input)
             area += (pm.points[f[k]] - pm.points[f[0]]) ^ (pm.points[f[k + 1]] - pm.points[f[0]]);
         float dist = input.bbox.Diag();
         P3 closest;
-        const TFace *near = vcg::tri::GetClosestFaceBase(input, grid, P3::Construct(centroid), input.bbox.Diag(), dist, closest);
+        const TFace *near = grid.GetClosest(exactDistance, noMarks, P3::Construct(centroid), input.bbox.Diag(), dist, closest);
         if (near && area * D3::Construct(near->cN()) < 0) ++(besideSharpCrease(*near) ? c.ambiguous : c.flipped);
         if (f.size() == 4) {
             auto bent = [&](int i) {

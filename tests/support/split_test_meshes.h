@@ -19,6 +19,7 @@
 
 #include "test_mesh.h"
 #include <vcg/complex/algorithms/closest.h>
+#include <vcg_ext/common/point_face_distance.h>
 #include <vcg/complex/append.h>
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg_ext/common/front_edges.h>
@@ -175,7 +176,9 @@ public:
     }
     const TFace *Closest(const P3 &p, float &dist, P3 &q)
     {
-        return vcg::tri::GetClosestFaceBase(mesh, grid, p, maxDist, dist, q);
+        vcg_ext::PointFaceDistance<TFace> exactDistance;
+        vcg::tri::EmptyTMark<TMesh> noMarks;
+        return grid.GetClosest(exactDistance, noMarks, p, maxDist, dist, q);
     }
     TMesh mesh;
 

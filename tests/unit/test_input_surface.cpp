@@ -78,3 +78,45 @@ TEST(InputSurface, OnEdgeOverARidgeFacesNotEveryClosestTriangle)
     // Above one sheet only that sheet decides.
     EXPECT_TRUE(input.FacesEveryClosest(D3(0.5, 0.8, 0.3), tiltedToOneSide));
 }
+
+// An obtuse triangle (0,0,0) (10,0,0) (5,1,0) and the point (2,3,1): its projection lies outside
+// the edges b-c and c-a, and the nearest point is inside edge c-a, at (2.5, 0.5, 0): distance
+// sqrt(0.5^2 + 2.5^2 + 1) = sqrt(7.5). vcglib 2020.09's PointDistanceBase measures to the first
+// edge whose side test fails (b-c, nearest at its end c): sqrt(13 + 1).
+TEST(InputSurface, ExactDistanceToAnObtuseTriangle)
+{
+    TMesh m;
+    Build(m, {{0, 0, 0}, {10, 0, 0}, {5, 1, 0}}, {{0, 1, 2}});
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
+    const P3 p(2, 3, 1);
+    P3 closest;
+    float dist = 100;
+    ASSERT_TRUE(vcg_ext::PointFaceDistance<TFace>()(m.face[0], p, dist, closest));
+    EXPECT_NEAR(dist, std::sqrt(7.5), 1e-5);
+    EXPECT_NEAR(closest[0], 2.5, 1e-5);
+    EXPECT_NEAR(closest[1], 0.5, 1e-5);
+    EXPECT_NEAR(closest[2], 0.0, 1e-5);
+    float vcgDist = 100;
+    P3 vcgClosest;
+    vcg::face::PointDistanceBase(m.face[0], p, vcgDist, vcgClosest);
+    EXPECT_NEAR(vcgDist, std::sqrt(14.0), 1e-5);  // why vcglib's functor is not used
+    // a face farther than the bound is not taken, and the bound is kept
+    float bound = 2.5f;
+    EXPECT_FALSE(vcg_ext::PointFaceDistance<TFace>()(m.face[0], p, bound, closest));
+    EXPECT_EQ(bound, 2.5f);
+}
+
+// The same triangle next to a second one facing the other way, 3 from the point: the input
+// surface finds the obtuse triangle (sqrt(7.5) = 2.74 away) as the closest, so the normal under
+// the point is its normal (up), not the farther triangle's (down).
+TEST(InputSurface, ClosestTriangleOfAnObtuseNeighbourhoodIsTheNearest)
+{
+    TMesh m;
+    Build(m, {{0, 0, 0}, {10, 0, 0}, {5, 1, 0}, {-5, 3, 4}, {9, 3, 4}, {2, 10, 4}}, {{0, 1, 2}, {3, 5, 4}});
+    vcg_ext::InputSurface<TMesh> input(m);
+    P3 closest;
+    const TFace *f = input.Closest(P3(2, 3, 1), closest);
+    ASSERT_NE(f, nullptr);
+    EXPECT_EQ(vcg::tri::Index(input.mesh, f), 0u);
+    EXPECT_GT(input.NormalUnder(D3(2, 3, 1), D3(0, 0, -1))[2], 0.99);
+}

@@ -27,6 +27,7 @@
 
 #include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
+#include <vcg_ext/common/point_face_distance.h>
 #include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/quad_quality.h>
 
@@ -94,7 +95,7 @@ public:
     // `closest`), or null.
     const FaceType *ClosestWithin(const CoordType &p, double maxDistance, CoordType &closest)
     {
-        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        PointFaceDistance<FaceType> distance;
         vcg::tri::EmptyTMark<MeshType> noMarks;
         ScalarType dist = ScalarType(maxDistance);
         return grid.GetClosest(distance, noMarks, p, ScalarType(maxDistance), dist, closest);
@@ -198,7 +199,7 @@ public:
         std::vector<FaceType *> around;
         std::vector<ScalarType> distances;
         std::vector<CoordType> points;
-        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        PointFaceDistance<FaceType> distance;
         vcg::tri::EmptyTMark<MeshType> noMarks;
         grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
@@ -226,7 +227,7 @@ private:
     // A search near a known surface goes a little beyond it (float rounding of the copy).
     static constexpr double kNearSearchSlack = 1.01;
 
-    // vcglib's point-triangle distance, for the triangles facing `direction` only.
+    // The exact point-triangle distance, for the triangles facing `direction` only.
     struct FacingDistance {
         typedef CoordType QueryType;
         const InputSurface *surface;
@@ -235,7 +236,7 @@ private:
         bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &q) const
         {
             if (!(P3::Construct(surface->Normal(&f)) * direction > 0)) return false;
-            return vcg::face::PointDistanceBase(f, p, minDist, q);
+            return PointFaceDistance<FaceType>()(f, p, minDist, q);
         }
     };
 
@@ -246,7 +247,7 @@ private:
         std::vector<FaceType *> around;
         std::vector<ScalarType> distances;
         std::vector<CoordType> points;
-        vcg::face::PointDistanceBaseFunctor<ScalarType> distance;
+        PointFaceDistance<FaceType> distance;
         vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
         grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
         return around;
