@@ -211,3 +211,54 @@ TEST(FlippedFaceMend, AFlatTriangleUnderATentIsSplitOnTheSheetItFaces)
     }
     EXPECT_EQ(frontSides, 1) << "the front side was lost or copied";
 }
+
+TEST(FlippedFaceMend, ATriangleNoMoveMendsIsCollapsedWithTheTriangleAcrossItsSide)
+{
+    // the input: a 4 x 4 grid folded along x = 2 (flat for x <= 2, rising 3 per unit beyond: a
+    // crease of 72 degrees); the output: the same grid with the crease vertex (2, 2) slid along
+    // the crease past (2, 1), to y = 0.8, so the triangles between them turn over. It may not move
+    // (on the crease) and every other vertex is on the front (every other edge selected), so no
+    // move mends them: (2, 2) is collapsed into (2, 1) with a triangle across, the mesh stays a
+    // manifold with valid face-face adjacency, and nothing is left turned over.
+    TMesh input, m;
+    MakeGrid(input, 4, 4.f);
+    for (TVertex &v : input.vert)
+        if (v.P()[0] > 2) v.P()[2] = 3 * (v.P()[0] - 2);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    TVertex *u = At(m, 2, 2);
+    ASSERT_NE(u, nullptr);
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (f.V0(k) != u && f.V1(k) != u) f.SetFaceEdgeS(k);
+    u->P() = P3(2, 0.8f, 0);
+    auto turnedOver = [&]() {
+        int n = 0;
+        for (const TFace &f : m.face)
+            if (!f.IsD() && !surface.FacesEveryClosest(vcg::Point3d::Construct(vcg::Barycenter(f)),
+                                                       vcg::Point3d::Construct(vcg::TriangleNormal(f))))
+                ++n;
+        return n;
+    };
+    ASSERT_GT(turnedOver(), 0);
+    const int faces = m.fn, verts = m.vn;
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_GE(st.collapsed, 1);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_EQ(turnedOver(), 0);
+    EXPECT_EQ(m.fn, faces - 2 * st.collapsed);
+    EXPECT_EQ(m.vn, verts - st.collapsed);
+    EXPECT_EQ(int(m.face.size()), m.fn) << "not compacted";
+    EXPECT_EQ(st.removedPolygons.size(), size_t(2 * st.collapsed));
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            TFace *g = f.FFp(k);
+            if (g == &f) continue;  // the grid's border
+            EXPECT_EQ(g->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
+            EXPECT_EQ(g->V0(f.FFi(k)), f.V1(k));
+            EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
+        }
+}

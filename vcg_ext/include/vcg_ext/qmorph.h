@@ -147,7 +147,10 @@ public:
                                          shape.poorBefore, shape.poorAfter)
                                 : std::string()) +
                    (mend.mended ? Format("; %d faces found flipped or inverted at the end and turned back", mend.mended) : std::string()) +
-                   (mend.split ? Format(" (%d triangles split on the sheet they face)", mend.split) : std::string());
+                   (mend.split || mend.collapsed
+                        ? Format(" (%d triangles split on the sheet they face, %d collapsed with the triangle across a side)",
+                                 mend.split, mend.collapsed)
+                        : std::string());
         }
     };
 
@@ -395,8 +398,10 @@ private:
         if (q.flippedFaces || q.invertedQuads || q.foldedQuads) {  // the last check, only when needed
             Progress(cb, 99, "Q-Morph: flipped faces");
             res.mend = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg);
+            for (auto p = res.mend.removedPolygons.rbegin(); p != res.mend.removedPolygons.rend(); ++p)
+                out.referenceNormals.erase(out.referenceNormals.begin() + *p);
             out.referenceNormals.insert(out.referenceNormals.end(), res.mend.splitNormals.begin(), res.mend.splitNormals.end());
-            res.triangles += 2 * res.mend.split;
+            res.triangles += 2 * res.mend.split - 2 * res.mend.collapsed;
             if (res.mend.mended) res.quality = measure();
         }
     }

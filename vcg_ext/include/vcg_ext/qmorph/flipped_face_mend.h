@@ -8,6 +8,8 @@
 // touching: man, two bones side by side: bones), that centroid may project onto the sheet behind;
 // then places around the corner are tried on the sheet the face faces. Corners on the front, on a
 // border or on a sharp crease of the input never move.
+// A triangle no move mends is removed by collapsing a side with the triangle across it (tiny
+// triangles at the fingers of man, kept aside), else split on the sheet it faces.
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -41,13 +44,17 @@ public:
 
     struct Stats {
         int mended = 0;  // flipped faces and inverted quads found and turned back
-        int split = 0;   // of those, triangles split in three on the sheet they face
-        int left = 0;    // those no move could mend
+        int split = 0;      // of those, triangles split in three on the sheet they face
+        int collapsed = 0;  // of those, triangles removed by collapsing a side (with the triangle across it)
+        int left = 0;       // those no move could mend
+        std::vector<int> removedPolygons;  // the collapsed triangles' polygons (in the order of the output's polygons), ascending
         std::vector<P3> splitNormals;  // per face added by the splits (appended to m.face, two per split): the normal it faces
     };
 
     // m in MeshLab's polygonal form (faux-edge quads), with face-face adjacency; front edges are
-    // its selected face-edges. Moves vertices only.
+    // its selected face-edges. Moves vertices; a triangle no move mends is collapsed or split (the
+    // face vectors are compacted when a collapse deleted faces: the output's polygons keep their
+    // order, less `removedPolygons`).
     static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg)
     {
         const OutputPolygons pg = OutputPolygons::Gather(m);
@@ -117,16 +124,37 @@ public:
         }
         std::vector<int> leftTriangles;
         st.left = 0;
-        for (int face = 0; face < pg.FaceCount(); ++face)
-            if (bad(face)) {
-                ++st.left;
-                if (pg.size[face] == 3) leftTriangles.push_back(pg.face[face]);
+        std::vector<int> polygonOf(m.face.size(), -1);  // per face of m: its polygon
+        for (int face = 0; face < pg.FaceCount(); ++face) {
+            FaceType &f = m.face[pg.face[face]];
+            polygonOf[pg.face[face]] = face;
+            for (int k = 0; k < 3; ++k)
+                if (f.IsF(k)) polygonOf[vcg::tri::Index(m, f.FFp(k))] = face;
+        }
+        std::vector<char> touched(m.vert.size(), 0);  // corners of a collapse's star: pg no longer describes them
+        std::vector<char> removed(pg.FaceCount(), 0);
+        for (int face = 0; face < pg.FaceCount(); ++face) {
+            if (removed[face]) continue;
+            if (!bad(face)) continue;
+            ++st.left;
+            if (pg.size[face] != 3) continue;
+            const int across = CollapseSide(m, pg, face, polygonOf, touched, position, facesInput, jacobian, surface, creaseAngleDeg);
+            if (across < 0) {
+                leftTriangles.push_back(pg.face[face]);
+                continue;
             }
+            ++st.collapsed;
+            removed[face] = removed[across] = 1;
+            st.removedPolygons.push_back(face);
+            st.removedPolygons.push_back(across);
+        }
         for (int f : leftTriangles)
             if (SplitOnFacedSheet(m, f, surface, st.splitNormals)) ++st.split;
-        st.mended += st.split;
-        st.left -= st.split;
-        if (st.split) {
+        st.mended += st.split + st.collapsed;
+        st.left -= st.split + st.collapsed;
+        std::sort(st.removedPolygons.begin(), st.removedPolygons.end());
+        if (st.collapsed) vcg::tri::Allocator<MeshType>::CompactEveryVector(m);  // keeps the order of what is left
+        if (st.split || st.collapsed) {
             vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
             if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         }
@@ -135,6 +163,7 @@ public:
 
 private:
     typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
 
     // A triangle no move mends (a flat triangle over a flap of the input thinner than its chord
     // error: its centroid nearer the sheet behind, its corners on the sheet it faces) split in three
@@ -174,6 +203,103 @@ private:
         for (int e = 1; e < 3; ++e) ClearSide(m.face[f], e);
         return true;
     }
+    // A triangle (polygon `face`) no move mends, removed by collapsing one of its sides, shortest
+    // first, with the triangle across it: the side's free end u goes to its other end w (u on no
+    // front edge or border; on a sharp crease of the input only if w is too), when the two
+    // triangles' corners are u and w's only common neighbours (the link condition: the surface
+    // stays a 2-manifold of the same genus) and every other polygon around u, with u at w, faces
+    // the input and no quad is folded or made worse (as a corner move is judged). Tiny triangles
+    // and needles at the fingers of a scan or along a fin's edge are what no move mends (man,
+    // diplodocus, kept aside). Faces are deleted, not compacted; face-face adjacency is kept
+    // valid. Returns the polygon of the triangle across, or -1.
+    template <class Position, class Faces, class Jacobian>
+    static int CollapseSide(MeshType &m, const OutputPolygons &pg, int face, const std::vector<int> &polygonOf,
+                            std::vector<char> &touched, Position position, Faces facesInput, Jacobian jacobian,
+                            InputSurface<MeshType> &surface, double creaseAngleDeg)
+    {
+        FaceType &f = m.face[pg.face[face]];
+        auto index = [&](const VertexType *v) { return int(vcg::tri::Index(m, v)); };
+        for (int k = 0; k < 3; ++k)
+            if (touched[index(f.V(k))]) return -1;
+        int order[3] = {0, 1, 2};
+        std::sort(order, order + 3, [&](int a, int b) {
+            return vcg::SquaredDistance(f.P0(a), f.P1(a)) < vcg::SquaredDistance(f.P0(b), f.P1(b));
+        });
+        for (int k : order) {
+            FaceType *g = f.FFp(k);
+            if (g == &f || f.IsFaceEdgeS(k) || f.IsF(k)) continue;
+            const int j = f.FFi(k);
+            const int across = polygonOf[vcg::tri::Index(m, g)];
+            if (across < 0 || pg.size[across] != 3 || touched[index(g->V2(j))]) continue;
+            for (int end = 0; end < 2; ++end) {
+                const int u = index(end == 0 ? f.V0(k) : f.V1(k)), w = index(end == 0 ? f.V1(k) : f.V0(k));
+                if (pg.fixed[u]) continue;
+                if (surface.OnCrease(position(u), creaseAngleDeg) && !surface.OnCrease(position(w), creaseAngleDeg)) continue;
+                std::vector<FaceType *> star, starW;
+                std::vector<int> ring, ringW;
+                if (!Star(m, &f, end == 0 ? k : (k + 1) % 3, star, ring) || !Star(m, &f, end == 0 ? (k + 1) % 3 : k, starW, ringW)) continue;
+                std::sort(ring.begin(), ring.end());
+                std::sort(ringW.begin(), ringW.end());
+                std::vector<int> common;
+                std::set_intersection(ring.begin(), ring.end(), ringW.begin(), ringW.end(), std::back_inserter(common));
+                const int a = index(f.V2(k)), b = index(g->V2(j));
+                if (a == b || common.size() != 2 || !std::binary_search(common.begin(), common.end(), a) ||
+                    !std::binary_search(common.begin(), common.end(), b))
+                    continue;
+                // the polygons around u but the two triangles, with u at w: facing the input, no
+                // quad worse (as a corner move is judged)
+                const CoordType old = m.vert[u].cP();
+                std::vector<double> before;
+                for (int h : pg.facesOf[u]) before.push_back(std::min(kConvex, jacobian(h)));
+                m.vert[u].P() = m.vert[w].cP();
+                bool fine = true;
+                for (size_t i = 0; i < pg.facesOf[u].size() && fine; ++i) {
+                    const int h = pg.facesOf[u][i];
+                    if (h == face || h == across) continue;
+                    fine = facesInput(h) && jacobian(h) >= before[i];
+                }
+                m.vert[u].P() = old;
+                if (!fine) continue;
+                // the surgery: the sides next to u in both triangles glued to the sides next to w
+                // (a front edge on either keeps its selection on both), u's faces moved to w
+                for (FaceType *t : {&f, g}) {
+                    const int e = t == &f ? k : j;
+                    FaceType *x = t->FFp((e + 1) % 3), *y = t->FFp((e + 2) % 3);
+                    const int xi = t->FFi((e + 1) % 3), yi = t->FFi((e + 2) % 3);
+                    const bool front = x->IsFaceEdgeS(xi) || y->IsFaceEdgeS(yi);
+                    x->FFp(xi) = y; x->FFi(xi) = yi;
+                    y->FFp(yi) = x; y->FFi(yi) = xi;
+                    if (front) { x->SetFaceEdgeS(xi); y->SetFaceEdgeS(yi); }
+                }
+                for (FaceType *t : star)
+                    if (t != &f && t != g)
+                        for (int c = 0; c < 3; ++c)
+                            if (t->V(c) == &m.vert[u]) t->V(c) = &m.vert[w];
+                vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+                vcg::tri::Allocator<MeshType>::DeleteFace(m, *g);
+                vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[u]);
+                touched[u] = touched[w] = 1;
+                for (int v : ring) touched[v] = 1;
+                return across;
+            }
+        }
+        return -1;
+    }
+
+    // The triangles around corner `corner` of f and the vertices across their sides from it (each
+    // once), walking the face-face adjacency; false on a border or a walk that does not come back.
+    static bool Star(MeshType &m, FaceType *f, int corner, std::vector<FaceType *> &faces, std::vector<int> &ring)
+    {
+        vcg::face::Pos<FaceType> pos(f, corner, f->V(corner));
+        do {
+            if (pos.F()->FFp(pos.E()) == pos.F() || faces.size() > kMaxStar) return false;
+            faces.push_back(pos.F());
+            ring.push_back(int(vcg::tri::Index(m, pos.VFlip())));
+            pos.NextE();
+        } while (pos.F() != f || pos.E() != corner);
+        return true;
+    }
+
     static void ClearSide(FaceType &f, int e)
     {
         f.ClearFaceEdgeS(e);
@@ -192,6 +318,8 @@ private:
         return places;
     }
 
+    // A collapse's vertex stars are walked up to this many triangles (a valid mesh has far fewer).
+    static constexpr size_t kMaxStar = 1000;
     // Rounds over the faces still flipped: a tangle may need a neighbour moved first.
     static constexpr int kRounds = 4;
     // A move may leave a quad around the corner at any scaled Jacobian down to this (a convex
