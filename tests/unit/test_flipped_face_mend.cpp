@@ -260,5 +260,6 @@ TEST(FlippedFaceMend, ATriangleNoMoveMendsIsCollapsedWithTheTriangleAcrossItsSid
             EXPECT_EQ(g->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
             EXPECT_EQ(g->V0(f.FFi(k)), f.V1(k));
             EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
+            EXPECT_FALSE(f.IsB(k)) << "an inner side flagged as border";
         }
 }

@@ -21,7 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
+#include <utility>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -203,15 +203,16 @@ private:
         for (int e = 1; e < 3; ++e) ClearSide(m.face[f], e);
         return true;
     }
+
     // A triangle (polygon `face`) no move mends, removed by collapsing one of its sides, shortest
     // first, with the triangle across it: the side's free end u goes to its other end w (u on no
-    // front edge or border; on a sharp crease of the input only if w is too), when the two
-    // triangles' corners are u and w's only common neighbours (the link condition: the surface
-    // stays a 2-manifold of the same genus) and every other polygon around u, with u at w, faces
-    // the input and no quad is folded or made worse (as a corner move is judged). Tiny triangles
-    // and needles at the fingers of a scan or along a fin's edge are what no move mends (man,
-    // diplodocus, kept aside). Faces are deleted, not compacted; face-face adjacency is kept
-    // valid. Returns the polygon of the triangle across, or -1.
+    // front edge or border; on a sharp crease of the input only if w is too), where vcglib's link
+    // condition holds (the surface stays a 2-manifold of the same genus) and every other polygon
+    // around u, with u at w, faces the input and no quad is folded or made worse (as a corner move
+    // is judged). Tiny triangles at the fingers of a scan are what no move mends (man, kept aside).
+    // vcglib's FFEdgeCollapse does it (faces deleted, not compacted; face-face adjacency kept
+    // valid); a front edge on either side it glues keeps its selection on both. Returns the
+    // polygon of the triangle across, or -1.
     template <class Position, class Faces, class Jacobian>
     static int CollapseSide(MeshType &m, const OutputPolygons &pg, int face, const std::vector<int> &polygonOf,
                             std::vector<char> &touched, Position position, Faces facesInput, Jacobian jacobian,
@@ -230,22 +231,14 @@ private:
             if (g == &f || f.IsFaceEdgeS(k) || f.IsF(k)) continue;
             const int j = f.FFi(k);
             const int across = polygonOf[vcg::tri::Index(m, g)];
-            if (across < 0 || pg.size[across] != 3 || touched[index(g->V2(j))]) continue;
+            if (across < 0 || pg.size[across] != 3 || touched[index(g->V2(j))] || !vcg::face::FFLinkCondition(f, k)) continue;
             for (int end = 0; end < 2; ++end) {
-                const int u = index(end == 0 ? f.V0(k) : f.V1(k)), w = index(end == 0 ? f.V1(k) : f.V0(k));
+                // FFEdgeCollapse(t, e) moves t's V0(e) onto its V1(e): f's side k one way, g's side j the other
+                FaceType &t = end == 0 ? f : *g;
+                const int e = end == 0 ? k : j;
+                const int u = index(t.V0(e)), w = index(t.V1(e));
                 if (pg.fixed[u]) continue;
                 if (surface.OnCrease(position(u), creaseAngleDeg) && !surface.OnCrease(position(w), creaseAngleDeg)) continue;
-                std::vector<FaceType *> star, starW;
-                std::vector<int> ring, ringW;
-                if (!Star(m, &f, end == 0 ? k : (k + 1) % 3, star, ring) || !Star(m, &f, end == 0 ? (k + 1) % 3 : k, starW, ringW)) continue;
-                std::sort(ring.begin(), ring.end());
-                std::sort(ringW.begin(), ringW.end());
-                std::vector<int> common;
-                std::set_intersection(ring.begin(), ring.end(), ringW.begin(), ringW.end(), std::back_inserter(common));
-                const int a = index(f.V2(k)), b = index(g->V2(j));
-                if (a == b || common.size() != 2 || !std::binary_search(common.begin(), common.end(), a) ||
-                    !std::binary_search(common.begin(), common.end(), b))
-                    continue;
                 // the polygons around u but the two triangles, with u at w: facing the input, no
                 // quad worse (as a corner move is judged)
                 const CoordType old = m.vert[u].cP();
@@ -260,44 +253,31 @@ private:
                 }
                 m.vert[u].P() = old;
                 if (!fine) continue;
-                // the surgery: the sides next to u in both triangles glued to the sides next to w
-                // (a front edge on either keeps its selection on both), u's faces moved to w
-                for (FaceType *t : {&f, g}) {
-                    const int e = t == &f ? k : j;
-                    FaceType *x = t->FFp((e + 1) % 3), *y = t->FFp((e + 2) % 3);
-                    const int xi = t->FFi((e + 1) % 3), yi = t->FFi((e + 2) % 3);
-                    const bool front = x->IsFaceEdgeS(xi) || y->IsFaceEdgeS(yi);
-                    x->FFp(xi) = y; x->FFi(xi) = yi;
-                    y->FFp(yi) = x; y->FFi(yi) = xi;
-                    if (front) { x->SetFaceEdgeS(xi); y->SetFaceEdgeS(yi); }
+                std::vector<VertexType *> ring;
+                vcg::face::VVOrderedStarFF(vcg::face::Pos<FaceType>(&t, e, t.V0(e)), ring);
+                std::array<std::pair<FaceType *, int>, 4> glued;  // the sides it glues, in pairs
+                for (int s = 0; s < 2; ++s) {
+                    FaceType &tri = s == 0 ? f : *g;
+                    const int side = s == 0 ? k : j;
+                    for (int d = 1; d < 3; ++d) glued[2 * s + d - 1] = {tri.FFp((side + d) % 3), tri.FFi((side + d) % 3)};
                 }
-                for (FaceType *t : star)
-                    if (t != &f && t != g)
-                        for (int c = 0; c < 3; ++c)
-                            if (t->V(c) == &m.vert[u]) t->V(c) = &m.vert[w];
-                vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
-                vcg::tri::Allocator<MeshType>::DeleteFace(m, *g);
-                vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[u]);
+                vcg::face::FFEdgeCollapse(m, t, e);
+                // a front edge on either glued side stays one on both; vcglib's detach leaves the
+                // border bit on sides that are glued again
+                for (int s = 0; s < 4; s += 2) {
+                    auto &x = glued[s], &y = glued[s + 1];
+                    const bool front = x.first->IsFaceEdgeS(x.second) || y.first->IsFaceEdgeS(y.second);
+                    for (auto &side : {x, y}) {
+                        side.first->ClearB(side.second);
+                        if (front) side.first->SetFaceEdgeS(side.second);
+                    }
+                }
                 touched[u] = touched[w] = 1;
-                for (int v : ring) touched[v] = 1;
+                for (VertexType *v : ring) touched[index(v)] = 1;
                 return across;
             }
         }
         return -1;
-    }
-
-    // The triangles around corner `corner` of f and the vertices across their sides from it (each
-    // once), walking the face-face adjacency; false on a border or a walk that does not come back.
-    static bool Star(MeshType &m, FaceType *f, int corner, std::vector<FaceType *> &faces, std::vector<int> &ring)
-    {
-        vcg::face::Pos<FaceType> pos(f, corner, f->V(corner));
-        do {
-            if (pos.F()->FFp(pos.E()) == pos.F() || faces.size() > kMaxStar) return false;
-            faces.push_back(pos.F());
-            ring.push_back(int(vcg::tri::Index(m, pos.VFlip())));
-            pos.NextE();
-        } while (pos.F() != f || pos.E() != corner);
-        return true;
     }
 
     static void ClearSide(FaceType &f, int e)
@@ -318,8 +298,6 @@ private:
         return places;
     }
 
-    // A collapse's vertex stars are walked up to this many triangles (a valid mesh has far fewer).
-    static constexpr size_t kMaxStar = 1000;
     // Rounds over the faces still flipped: a tangle may need a neighbour moved first.
     static constexpr int kRounds = 4;
     // A move may leave a quad around the corner at any scaled Jacobian down to this (a convex
