@@ -18,11 +18,11 @@
 #include <vector>
 
 #include <vcg/complex/algorithms/closest.h>
-#include <vcg_ext/common/point_face_distance.h>
 #include <vcg/space/index/grid_static_ptr.h>
 
 #include "test_mesh.h"
 #include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/point_face_distance.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace qmf_test {

@@ -19,10 +19,10 @@
 
 #include "test_mesh.h"
 #include <vcg/complex/algorithms/closest.h>
-#include <vcg_ext/common/point_face_distance.h>
 #include <vcg/complex/append.h>
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg_ext/common/front_edges.h>
+#include <vcg_ext/common/point_face_distance.h>
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/polyline_embedding.h>
 

@@ -27,8 +27,8 @@
 
 #include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
-#include <vcg_ext/common/point_face_distance.h>
 #include <vcg_ext/common/face_corners.h>
+#include <vcg_ext/common/point_face_distance.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
