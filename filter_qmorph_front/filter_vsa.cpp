@@ -35,11 +35,13 @@ void QMorphFrontPlugin::initVsaParameters(MeshModel &, RichParameterList &par)
     par.addParam(RichFloat("ThresholdAngle", float(d.thresholdAngleDeg), "Threshold angle (deg)",
                            "In degrees, in (0, 180): a region with a face whose normal deviates from the region's proxy "
                            "normal by more than this angle gets an extra seed (threshold mode). Smaller: more, flatter "
-                           "regions, hence more front curves and smaller patches. The paper: 60 degrees (pi/3)."));
+                           "regions, hence more front curves and smaller patches. The paper: 60 degrees (pi/3). Faces "
+                           "with less area than 1e-12 of the squared bounding-box diagonal have no reliable normal and "
+                           "are left out."));
     par.addParam(RichInt("MaxRegions", d.maxRegions, "Max regions",
                          "Number of regions (count). Threshold mode: the most seeding may make (it stops there even "
-                         "if faces still exceed the angle); 0 is automatic: one region per 100 faces, at least 200, "
-                         "so big scans still meet the angle. Fixed mode: exactly this many (at least 1; fewer only on "
+                         "if faces still exceed the angle); 0 is automatic: one region per 4 faces, at least 200, "
+                         "so big and rough scans still meet the angle. Fixed mode: exactly this many (at least 1; fewer only on "
                          "a mesh with fewer faces)."));
     par.addParam(RichInt("MaxIterations", d.maxIterations, "Max iterations",
                          "Number of Lloyd iterations (flooding + proxy fitting; at least 1) at most after each "

@@ -95,7 +95,7 @@ const TableDef &Def(int t)
              "iterations per round)", VSA::Params().mode == VSA::ThresholdSeeding ? "threshold" : "fixed-count",
              VSA::Params().thresholdAngleDeg, VSA::Params().initialSeeds,
              VSA::Params().maxRegions > 0 ? Fmt("<= %d regions", VSA::Params().maxRegions).c_str()
-                                          : "automatic region cap (one per 100 faces, at least 200)",
+                                          : "automatic region cap (one per 4 faces, at least 200)",
              VSA::Params().maxIterations),
          {"mesh", "faces", "regions", "Lloyd it. (rounds)", "L2,1 error", "max dev. (deg)", "time (ms)", "ms / Lloyd it."},
          "time: wall clock of VSASegmentation::Segment (face-face topology included), best of the repeats; ms / Lloyd "

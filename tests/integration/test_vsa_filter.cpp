@@ -14,6 +14,8 @@
 using namespace qmf_test;
 
 namespace {
+// The written PLY holds float coordinates: normals recomputed from them differ by a little.
+constexpr double kFloatSlackDeg = 0.5;
 
 // Planar patches: faces edge-connected to a start face whose normals are within 0.5 deg of it.
 std::vector<std::vector<int>> PlanarPatches(const PlyData &d, std::vector<double> &area)
@@ -104,6 +106,49 @@ TEST(VsaFilter, FandiskThroughMeshlabserver)
         EXPECT_EQ(regionIds.size(), 1u) << "a flat face of " << p.size() << " triangles is split over regions";
     }
     EXPECT_GE(large, 3);
+}
+
+// CGAL's femur, a rough scan whose ridges turn by more than 60 degrees within a few faces: at the
+// defaults (automatic region cap) every face ends within the threshold angle of its region's
+// normal, as logged and as measured here on the written regions (one region per 100 faces, the
+// earlier automatic cap, stopped the seeding at 200 regions with 170 degrees).
+TEST(VsaFilter, RoughScanMeetsTheThresholdAngleAtTheDefaults)
+{
+    std::string dir = WorkDir("vsa_femur");
+    RunResult r = RunMeshLabServer(dir, "-i " + Quote(std::string(QMF_TEST_MESH_DIR) + "/femur.off") +
+                                            " -o out.ply -m fq -s " + Quote(Script("vsa_segment.mlx")));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(r.output, match, std::regex("VSA: (\\d+) regions on 7798 faces.*max normal deviation ([0-9.]+) deg")))
+        << r.output;
+    const int k = std::stoi(match[1]);
+    EXPECT_GT(k, 200) << "the case needs more regions than the old cap";
+    EXPECT_LE(std::stod(match[2]), 60.0);
+    EXPECT_EQ(r.output.find("reached before every face"), std::string::npos) << "stopped by the cap, not the angle";
+
+    PlyData d = ReadPly(dir + "/out.ply");
+    ASSERT_EQ(d.error, "");
+    ASSERT_EQ(d.faces.size(), 7798u);
+    std::vector<V3> sum(k, V3{0, 0, 0}), normal(d.faces.size());
+    std::vector<int> region(d.faces.size());
+    for (size_t f = 0; f < d.faces.size(); ++f) {
+        const auto &t = d.faces[f];
+        const V3 c = Cross(Sub(d.vertices[t[1]], d.vertices[t[0]]), Sub(d.vertices[t[2]], d.vertices[t[0]]));
+        const double l = std::sqrt(Dot(c, c));
+        ASSERT_GT(l, 0);
+        normal[f] = {c[0] / l, c[1] / l, c[2] / l};
+        region[f] = int(d.faceProps["quality"][f]);
+        ASSERT_GE(region[f], 0);
+        ASSERT_LT(region[f], k);
+        for (int i = 0; i < 3; ++i) sum[region[f]][i] += c[i];  // area-weighted: the region's proxy
+    }
+    double worst = 0;
+    for (size_t f = 0; f < d.faces.size(); ++f) {
+        const V3 &s = sum[region[f]];
+        const double c = Dot(normal[f], s) / std::sqrt(Dot(s, s));
+        worst = std::max(worst, std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / M_PI);
+    }
+    EXPECT_LE(worst, 60.0 + kFloatSlackDeg) << "a face farther than the threshold from its region's normal";
 }
 
 TEST(VsaFilter, PointCloudIsRefusedWithAMessageInTheLog)

@@ -328,7 +328,7 @@ TEST(VSA, InputProblemsAreRefusedOrWarnedWithTheirFix)
 
 // A sphere of 82k faces covered with bumps steep enough that 200 regions (the old default cap)
 // leave faces far beyond the threshold angle: the automatic cap (Max regions 0, the default: one
-// region per 100 faces) lets the seeding go on until every face is within the angle of its
+// region per 4 faces) lets the seeding go on until every face is within the angle of its
 // region's normal. The tail of that seeding relaxes only the split regions and their neighbours:
 // every region must still be one edge-connected piece whose proxy is its faces' mean normal.
 TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
@@ -356,7 +356,7 @@ TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
     const VSA::Result r = VSA::Segment(bumpy, defaults);
     ASSERT_EQ(r.error, "");
     ExpectValidPartition(bumpy, r);
-    EXPECT_EQ(r.regionCap, int(bumpy.fn) / 100);
+    EXPECT_EQ(r.regionCap, int(bumpy.fn) / VSA::kFacesPerAutoRegion);
     EXPECT_GT(r.regions, 200);
     EXPECT_LT(r.regions, r.regionCap) << "stopped by the angle, not the cap";
     EXPECT_LE(r.maxDeviationDeg, 60.0 + 1e-6);

@@ -88,11 +88,18 @@ public:
     // The automatic cap on the region count in threshold mode (the default): one region per
     // kFacesPerAutoRegion faces, at least kMinAutoRegions. A fixed cap of 200 stopped the seeding
     // of big scans far above the threshold (armadillo, 52k faces: 105 degrees; feline, 100k faces:
-    // 152 degrees; armadillo refined to 832k faces: 108 degrees), while a cap that grows with the
-    // faces still bounds the seeding rounds on a noisy mesh whose angle cannot be met.
+    // 152 degrees; armadillo refined to 832k faces: 108 degrees), and so did one region per 100
+    // faces on rough scans of CGAL's data, whose ridges and tips turn by more than the threshold
+    // within a few faces (femur, 7.8k faces: 170 degrees at 200 regions; it meets the angle with
+    // 868, one per 9 faces; bull one per 13, cheese one per 18). The cap only bounds the seeding
+    // rounds where the angle needs regions of a few faces.
     static int AutomaticRegionCap(int faces) { return std::max(kMinAutoRegions, faces / kFacesPerAutoRegion); }
     static constexpr int kMinAutoRegions = 200;
-    static constexpr int kFacesPerAutoRegion = 100;
+    static constexpr int kFacesPerAutoRegion = 4;
+    // Faces with less area than this fraction of the squared bounding-box diagonal have no normal
+    // worth the name (needles of scans): left out of the regions' deviation, the split test and
+    // the logged figure.
+    static constexpr double kNegligibleAreaFraction = 1e-12;
 
     // Why `m` cannot be segmented with `p`, or "": the parameters, no faces, NaN coordinates, and
     // what would make the regions meaningless: unmerged vertices (a triangle soup would make every
@@ -166,6 +173,7 @@ private:
     static constexpr int kSeedingFromPercent = 3;  // where the seeding's progress starts (after the set-up)
     int n;                          // face vector size (deleted faces included, never labelled)
     std::vector<double> area;
+    double negligibleArea = 0;      // kNegligibleAreaFraction of the squared diagonal
     std::vector<Vec> normal;
     std::vector<int> label;         // region per face
     std::vector<int> seeds;         // seed face per region
@@ -183,6 +191,10 @@ private:
         area.assign(n, 0.0);
         normal.assign(n, Vec(0, 0, 0));
         adj.assign(n, {-1, -1, -1});
+        vcg::Box3d box;
+        for (const auto &v : m.vert)
+            if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
+        negligibleArea = kNegligibleAreaFraction * box.Diag() * box.Diag();
         for (FaceType &f : m.face) {
             if (f.IsD()) continue;
             int i = int(vcg::tri::Index(m, f));
@@ -454,7 +466,7 @@ private:
             double e = Error(f, r);
             regionError[r] += e;
             if (f != seeds[r] && e > worst[r]) { worst[r] = e; worstFace[r] = f; }
-            if (area[f] > 0) {
+            if (area[f] > negligibleArea) {
                 double c = std::max(-1.0, std::min(1.0, normal[f] * proxy[r]));
                 maxAngle[r] = std::max(maxAngle[r], std::acos(c) * 180.0 / M_PI);
             }
