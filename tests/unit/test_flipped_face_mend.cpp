@@ -2,6 +2,7 @@
 // turned back by moving free corners, never a front corner, never leaving a quad concave.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "test_mesh.h"
@@ -262,4 +263,109 @@ TEST(FlippedFaceMend, ATriangleNoMoveMendsIsCollapsedWithTheTriangleAcrossItsSid
             EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
             EXPECT_FALSE(f.IsB(k)) << "an inner side flagged as border";
         }
+}
+
+namespace {
+// A flat 4 x 4 grid whose vertex (2, 2) is slid onto the middle of the side a b across one of its
+// triangles (the `which`-th of the four whose a b is a unit side; 1e-5 of the side inside): that
+// triangle becomes a needle. `across`: what lies across a b; `quadAcross`: the triangle across is
+// made half of a quad (faux cell diagonal).
+struct NeedleGrid {
+    TMesh input, m;
+    TFace *needle = nullptr, *across = nullptr;
+    int side = -1;
+
+    NeedleGrid(bool quadAcross, int which = 0)
+    {
+        MakeGrid(input, 4, 4.f, 0.f, 1, false);  // diagonals all one way: (2, 2)'s star is a convex hexagon
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
+        vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+        TVertex *v = At(m, 2, 2);
+        int unitSides = 0;
+        for (TFace &f : m.face)
+            for (int i = 0; i < 3 && !needle; ++i)
+                if (f.V(i) == v && vcg::Distance(f.P1(i), f.P2(i)) == 1.f && unitSides++ == which) needle = &f, side = (i + 1) % 3;
+        across = needle->FFp(side);
+        const P3 a = needle->P0(side), b = needle->P1(side), mid = (a + b) * 0.5f;
+        v->P() = mid + (v->P() - mid) * 1e-5f;
+        if (quadAcross)
+            for (int e = 0; e < 3; ++e)
+                if (vcg::Distance(across->P0(e), across->P1(e)) > 1.1f) {  // the cell's diagonal
+                    across->SetF(e);
+                    across->FFp(e)->SetF(across->FFi(e));
+                }
+    }
+    int Needles() const
+    {
+        int n = 0;
+        for (const TFace &f : m.face) {
+            double longest = 0;
+            for (int e = 0; e < 3; ++e) longest = std::max(longest, double(vcg::Distance(f.cP0(e), f.cP1(e))));
+            n += vcg::DoubleArea(f) < 1e-3 * longest * longest;
+        }
+        return n;
+    }
+    int FauxSides() const
+    {
+        int n = 0;
+        for (const TFace &f : m.face)
+            for (int e = 0; e < 3; ++e) n += f.IsF(e);
+        return n;
+    }
+};
+}  // namespace
+
+// A needle lying along its longest side (on a crease of the input its facing would be a coin flip)
+// whose corners all lie on the front is flipped away with the polygon across that side, which its
+// apex splits: two triangles, or a quad and a triangle when the triangle across is half of a quad.
+// Counts, orientation and the quad are kept; with that side on the front too it stays. With a free
+// corner it is collapsed instead (one vertex and two triangles fewer).
+TEST(FlippedFaceMend, ANeedleIsFlippedAwayWithThePolygonAcrossItsLongestSide)
+{
+    // the four unit sides of the star: the quads across have their diagonal either way
+    for (int which = 0; which < 8; ++which) {
+        const bool quadAcross = which >= 4;
+        NeedleGrid grid(quadAcross, which % 4);
+        TFace *acrossChord = grid.needle->FFp(grid.side);
+        for (TFace &f : grid.m.face)  // every corner on the front: no collapse
+            for (int k = 0; k < 3; ++k)
+                if (!f.IsF(k) && !(&f == grid.needle && k == grid.side) && !(&f == acrossChord && k == grid.needle->FFi(grid.side)))
+                    f.SetFaceEdgeS(k);
+        ASSERT_EQ(grid.Needles(), 1);
+        const int faces = grid.m.fn, faux = grid.FauxSides();
+        ASSERT_TRUE(Mend::HasNeedleTriangle(grid.m));
+        vcg_ext::InputSurface<TMesh> surface(grid.input);
+        const Mend::Stats st = Mend::Do(grid.m, surface, 60);
+        EXPECT_EQ(st.needlesFlipped, 1) << (quadAcross ? "quad across, side " : "triangle across, side ") << which % 4;
+        EXPECT_EQ(st.needlesRemoved, 1);
+        EXPECT_EQ(st.collapsed, 0);
+        EXPECT_EQ(grid.Needles(), 0);
+        EXPECT_EQ(grid.m.fn, faces);
+        EXPECT_EQ(grid.FauxSides(), faux) << "the quad across is still one quad";
+        EXPECT_EQ(FacesTurnedOver(grid.m), 0);
+        ASSERT_EQ(st.sameNormalAs.size(), 1u);
+        for (TFace &f : grid.m.face)
+            for (int k = 0; k < 3; ++k)
+                if (f.FFp(k) != &f) {
+                    EXPECT_EQ(f.FFp(k)->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
+                    EXPECT_EQ(f.IsF(k), f.FFp(k)->IsF(f.FFi(k))) << "a faux side on one face only";
+                }
+    }
+    NeedleGrid onFront(false);  // its longest side on the front too: it stays
+    for (TFace &f : onFront.m.face)
+        for (int k = 0; k < 3; ++k) f.SetFaceEdgeS(k);
+    vcg_ext::InputSurface<TMesh> surface(onFront.input);
+    EXPECT_EQ(Mend::Do(onFront.m, surface, 60).needlesRemoved, 0);
+    EXPECT_EQ(onFront.Needles(), 1);
+
+    NeedleGrid free(false);  // no front: its apex is collapsed onto a corner
+    const int faces = free.m.fn, vertices = free.m.vn;
+    vcg_ext::InputSurface<TMesh> freeSurface(free.input);
+    const Mend::Stats st = Mend::Do(free.m, freeSurface, 60);
+    EXPECT_EQ(st.needlesRemoved, 1);
+    EXPECT_EQ(st.collapsed, 1);
+    EXPECT_EQ(free.Needles(), 0);
+    EXPECT_EQ(free.m.fn, faces - 2);
+    EXPECT_EQ(free.m.vn, vertices - 1);
+    EXPECT_EQ(FacesTurnedOver(free.m), 0);
 }

@@ -146,10 +146,14 @@ public:
                    (shape.moves ? Format("; worst elements raised: %d corners moved, elements below 0.3 %d -> %d", shape.moves,
                                          shape.poorBefore, shape.poorAfter)
                                 : std::string()) +
-                   (mend.mended ? Format("; %d faces found flipped or inverted at the end and turned back", mend.mended) : std::string()) +
-                   (mend.split || mend.collapsed
-                        ? Format(" (%d triangles split on the sheet they face, %d collapsed with the triangle across a side)",
-                                 mend.split, mend.collapsed)
+                   (mend.mended || mend.needlesRemoved
+                        ? Format("; last check: %d faces found flipped or inverted and turned back, %d needle triangles removed",
+                                 mend.mended, mend.needlesRemoved)
+                        : std::string()) +
+                   (mend.split || mend.collapsed || mend.needlesFlipped
+                        ? Format(" (%d triangles split on the sheet they face, %d collapsed with the triangle across a side, "
+                                 "%d needles flipped away with the polygon across their longest side)",
+                                 mend.split, mend.collapsed, mend.needlesFlipped)
                         : std::string());
         }
     };
@@ -395,14 +399,16 @@ private:
         };
         res.quality = measure();
         const QuadQualityReport &q = res.quality;
-        if (q.flippedFaces || q.invertedQuads || q.foldedQuads) {  // the last check, only when needed
+        // the last check, only when needed
+        if (q.flippedFaces || q.invertedQuads || q.foldedQuads || qmorph::FlippedFaceMend<MeshType>::HasNeedleTriangle(m)) {
             Progress(cb, 99, "Q-Morph: flipped faces");
             res.mend = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg);
+            for (const auto &same : res.mend.sameNormalAs) out.referenceNormals[same.first] = out.referenceNormals[same.second];
             for (auto p = res.mend.removedPolygons.rbegin(); p != res.mend.removedPolygons.rend(); ++p)
                 out.referenceNormals.erase(out.referenceNormals.begin() + *p);
             out.referenceNormals.insert(out.referenceNormals.end(), res.mend.splitNormals.begin(), res.mend.splitNormals.end());
             res.triangles += 2 * res.mend.split - 2 * res.mend.collapsed;
-            if (res.mend.mended) res.quality = measure();
+            if (res.mend.mended || res.mend.needlesRemoved) res.quality = measure();
         }
     }
 

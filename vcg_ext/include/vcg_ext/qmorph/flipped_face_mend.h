@@ -27,6 +27,7 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <vcg_ext/common/edge_flip.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/qmorph/output_polygons.h>
@@ -45,7 +46,10 @@ public:
     struct Stats {
         int mended = 0;  // flipped faces and inverted quads found and turned back
         int split = 0;      // of those, triangles split in three on the sheet they face
-        int collapsed = 0;  // of those, triangles removed by collapsing a side (with the triangle across it)
+        int collapsed = 0;  // triangles removed by collapsing a side with the triangle across it (flipped ones and needles)
+        int needlesRemoved = 0;  // needle triangles not found flipped, removed by a collapse or a flip
+        int needlesFlipped = 0;  // needles (flipped or not) removed by flipping their longest side
+        std::vector<std::pair<int, int>> sameNormalAs;  // (polygon, polygon): the first now lies where the second was judged
         int left = 0;       // those no move could mend
         std::vector<int> removedPolygons;  // the collapsed triangles' polygons (in the order of the output's polygons), ascending
         std::vector<P3> splitNormals;  // per face added by the splits (appended to m.face, two per split): the normal it faces
@@ -133,32 +137,55 @@ public:
         }
         std::vector<char> touched(m.vert.size(), 0);  // corners of a collapse's star: pg no longer describes them
         std::vector<char> removed(pg.FaceCount(), 0);
+        int mendedByCollapse = 0;
         for (int face = 0; face < pg.FaceCount(); ++face) {
             if (removed[face]) continue;
-            if (!bad(face)) continue;
-            ++st.left;
+            const bool isBad = bad(face);
+            if (!isBad && !(pg.size[face] == 3 && IsNeedle(m.face[pg.face[face]]))) continue;
+            if (isBad) ++st.left;
             if (pg.size[face] != 3) continue;
-            const int across = CollapseSide(m, pg, face, polygonOf, touched, position, facesInput, jacobian, surface, creaseAngleDeg);
-            if (across < 0) {
-                leftTriangles.push_back(pg.face[face]);
+            // a flipped triangle or a needle: collapsed with the triangle across a side, else (a
+            // needle) flipped away, else (flipped) split on the sheet it faces
+            int across = CollapseSide(m, pg, face, polygonOf, touched, position, facesInput, jacobian, surface, creaseAngleDeg);
+            if (across >= 0) {
+                ++st.collapsed;
+                if (isBad) ++mendedByCollapse;
+                else ++st.needlesRemoved;
+                removed[face] = removed[across] = 1;
+                st.removedPolygons.push_back(face);
+                st.removedPolygons.push_back(across);
                 continue;
             }
-            ++st.collapsed;
-            removed[face] = removed[across] = 1;
-            st.removedPolygons.push_back(face);
-            st.removedPolygons.push_back(across);
+            across = FlipNeedleSide(m, pg, face, polygonOf, touched, position, jacobian, surface);
+            if (across >= 0) {
+                ++st.needlesRemoved;
+                ++st.needlesFlipped;
+                if (isBad) ++st.mended, --st.left;
+                st.sameNormalAs.push_back({face, across});
+                removed[face] = removed[across] = 1;  // no longer what pg says
+            } else if (isBad) {
+                leftTriangles.push_back(pg.face[face]);
+            }
         }
         for (int f : leftTriangles)
             if (SplitOnFacedSheet(m, f, surface, st.splitNormals)) ++st.split;
-        st.mended += st.split + st.collapsed;
-        st.left -= st.split + st.collapsed;
+        st.mended += st.split + mendedByCollapse;
+        st.left -= st.split + mendedByCollapse;
         std::sort(st.removedPolygons.begin(), st.removedPolygons.end());
         if (st.collapsed) vcg::tri::Allocator<MeshType>::CompactEveryVector(m);  // keeps the order of what is left
-        if (st.split || st.collapsed) {
+        if (st.split || st.collapsed || st.needlesFlipped) {
             vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
             if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         }
         return st;
+    }
+
+    // Whether m has a pure triangle (no faux side) that is a needle (NeedleSide).
+    static bool HasNeedleTriangle(const MeshType &m)
+    {
+        for (const FaceType &f : m.face)
+            if (!f.IsD() && !f.IsF(0) && !f.IsF(1) && !f.IsF(2) && IsNeedle(f)) return true;
+        return false;
     }
 
 private:
@@ -280,6 +307,82 @@ private:
         return -1;
     }
 
+    // A needle: its apex closer to its longest side than kNeedleHeight of that side (its normal is
+    // rounding noise; lying along a sharp crease of the input, it faces one side or the other
+    // whichever way a judge breaks the tie). Returns that side, or -1.
+    static int NeedleSide(const FaceType &f)
+    {
+        int k = 0;
+        double longest = 0;
+        for (int e = 0; e < 3; ++e) {
+            const double l = vcg::Distance(P3::Construct(f.cP0(e)), P3::Construct(f.cP1(e)));
+            if (l > longest) longest = l, k = e;
+        }
+        const P3 a = P3::Construct(f.cP0(k)), b = P3::Construct(f.cP1(k)), apex = P3::Construct(f.cP2(k));
+        const double height = ((b - a) ^ (apex - a)).Norm() / longest;
+        return longest > 0 && height < kNeedleHeight * longest ? k : -1;
+    }
+    static bool IsNeedle(const FaceType &f) { return NeedleSide(f) >= 0; }
+
+    // A needle (polygon `face`, a triangle P Q M, M its apex near its longest side P Q) removed by
+    // flipping P Q with the triangle across it, which M then splits: a triangle across (Q P X)
+    // becomes Q M X and M P X; half of a quad (Q P A B) becomes the quad Q M A B and the triangle
+    // M P A (the quad's diagonal first turned to Q A, so each polygon keeps its place in the output's
+    // order: the quad where the quad was, the triangle where the needle was). Kept when the new
+    // faces face the input and the new quad is no worse than the old one (or than kConvex).
+    // P Q must not be a front edge. Returns the polygon across, or -1.
+    template <class Position, class Jacobian>
+    static int FlipNeedleSide(MeshType &m, const OutputPolygons &pg, int face, const std::vector<int> &polygonOf,
+                              std::vector<char> &touched, Position position, Jacobian jacobian,
+                              InputSurface<MeshType> &surface)
+    {
+        FaceType &f = m.face[pg.face[face]];
+        const int k = NeedleSide(f);
+        if (k < 0 || f.IsFaceEdgeS(k) || f.IsF(k) || f.FFp(k) == &f) return -1;
+        FaceType *g = f.FFp(k);
+        const int across = polygonOf[vcg::tri::Index(m, g)];
+        auto index = [&](const VertexType *v) { return int(vcg::tri::Index(m, v)); };
+        const int P = index(f.V0(k)), Q = index(f.V1(k)), M = index(f.V2(k));
+        if (across < 0 || touched[P] || touched[Q] || touched[M]) return -1;
+        const int n = pg.size[across];
+        int c = 0;  // the quad's (or triangle's) corner Q, followed by P counter-clockwise
+        while (c < n && pg.corners[across][c] != Q) ++c;
+        if (c == n || pg.corners[across][(c + 1) % n] != P) return -1;
+        const int A = pg.corners[across][(c + 2) % n], B = n == 4 ? pg.corners[across][(c + 3) % n] : -1;
+        for (int v : {A, B})
+            if (v >= 0 && touched[v]) return -1;
+        auto facesInput = [&](std::initializer_list<int> corners) {
+            P3 q[4], centroid(0, 0, 0);
+            int count = 0;
+            for (int v : corners) centroid += (q[count++] = position(v));
+            const P3 area = vcg_ext::VectorArea(q, count);
+            return area.Norm() > 0 && surface.FacesEveryClosest(centroid / double(count), area);
+        };
+        if (n == 3) {
+            if (!facesInput({Q, M, A}) || !facesInput({M, P, A})) return -1;
+        } else {
+            const P3 q[4] = {position(Q), position(M), position(A), position(B)};
+            const P3 area = vcg_ext::VectorArea(q, 4);
+            if (IsFolded(q) || !(area.Norm() > 0) || !facesInput({M, P, A}) || !facesInput({Q, M, A, B})) return -1;
+            const P3 normal = surface.NormalUnder((q[0] + q[1] + q[2] + q[3]) / 4.0, area / area.Norm());
+            if (ScaledJacobian(q, normal) < std::min(kConvex, jacobian(across))) return -1;
+            const int w = f.FFi(k);
+            const int z = (w + 1) % 3;
+            if (g->IsF(z)) {  // the diagonal P B: turned to Q A, so the chord's triangle is Q P A
+                if (!vcg::face::CheckFlipEdge(*g, z)) return -1;
+                FlipEdgeKeepingFlags(*g, z);
+                const int diagonal = (z + 1) % 3;  // the new one: faux, as the one it replaces
+                g->SetF(diagonal);
+                g->FFp(diagonal)->SetF(g->FFi(diagonal));
+            }
+        }
+        if (!vcg::face::CheckFlipEdge(f, k)) return -1;  // (a quad's diagonal stays turned: the same quad)
+        FlipEdgeKeepingFlags(f, k);
+        for (int v : {P, Q, M, A, B})
+            if (v >= 0) touched[v] = 1;
+        return across;
+    }
+
     static void ClearSide(FaceType &f, int e)
     {
         f.ClearFaceEdgeS(e);
@@ -303,6 +406,9 @@ private:
     // A move may leave a quad around the corner at any scaled Jacobian down to this (a convex
     // quad, its corners turning the same way), or no lower than it was.
     static constexpr double kConvex = 1e-3;
+    // A triangle whose apex is closer to its longest side than this fraction of it is a needle
+    // (the sine below which a triangle is degenerate once written in float, as in the patches).
+    static constexpr double kNeedleHeight = 1e-3;
     // Steps toward (and away from) a neighbour, as fractions of the way to it.
     static constexpr double kSteps[4] = {0.25, 0.5, -0.25, 0.75};
 };
