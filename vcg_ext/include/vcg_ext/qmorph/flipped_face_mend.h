@@ -9,7 +9,10 @@
 // then places around the corner are tried on the sheet the face faces. Corners on the front, on a
 // border or on a sharp crease of the input never move.
 // A triangle no move mends is removed by collapsing a side with the triangle across it (tiny
-// triangles at the fingers of man, kept aside), else split on the sheet it faces.
+// triangles at the fingers of man, kept aside), else split on the sheet it faces. A needle (its
+// apex on its longest side), flipped or not, is removed too: collapsed, else flipped away with the
+// polygon across its longest side (lying along a sharp crease of the input, which side it faces
+// is a tie any judge breaks its own way: diplodocus' fin, kept aside).
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -56,9 +59,9 @@ public:
     };
 
     // m in MeshLab's polygonal form (faux-edge quads), with face-face adjacency; front edges are
-    // its selected face-edges. Moves vertices; a triangle no move mends is collapsed or split (the
-    // face vectors are compacted when a collapse deleted faces: the output's polygons keep their
-    // order, less `removedPolygons`).
+    // its selected face-edges. Moves vertices; a triangle no move mends, or a needle, is collapsed,
+    // flipped away or (flipped) split (the face vectors are compacted when a collapse deleted
+    // faces: the output's polygons keep their order, less `removedPolygons`).
     static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg)
     {
         const OutputPolygons pg = OutputPolygons::Gather(m);
