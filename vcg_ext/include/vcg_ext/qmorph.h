@@ -31,6 +31,7 @@
 
 #include <vcg_ext/common/format.h>
 #include <vcg_ext/common/input_surface.h>
+#include <vcg_ext/common/live_box.h>
 #include <vcg_ext/common/parallel.h>
 #include <vcg_ext/common/point_query_memo.h>
 #include <vcg_ext/common/progress_relay.h>
@@ -201,9 +202,7 @@ public:
     // the patches' width asks for more than kMaxAutoTriangles triangles.
     static double AutomaticEdgeLength(const MeshType &m)
     {
-        vcg::Box3d box;
-        for (const VertexType &v : m.vert)
-            if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
+        const vcg::Box3d box = LiveVertexBox(m);
         const double area = SurfaceArea(m), front = FrontLength(m);
         double L = EquilateralSide(area, std::max(1, m.fn));
         if (front > 0) L = std::min(L, 2 * area / front / kMinRowsAcross);

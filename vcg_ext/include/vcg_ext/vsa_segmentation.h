@@ -28,6 +28,7 @@
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
+#include <vcg_ext/common/live_box.h>
 #include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
 
@@ -191,10 +192,8 @@ private:
         area.assign(n, 0.0);
         normal.assign(n, Vec(0, 0, 0));
         adj.assign(n, {-1, -1, -1});
-        vcg::Box3d box;
-        for (const auto &v : m.vert)
-            if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
-        negligibleArea = kNegligibleAreaFraction * box.Diag() * box.Diag();
+        const double diagonal = LiveVertexBox(m).Diag();
+        negligibleArea = kNegligibleAreaFraction * diagonal * diagonal;
         for (FaceType &f : m.face) {
             if (f.IsD()) continue;
             int i = int(vcg::tri::Index(m, f));

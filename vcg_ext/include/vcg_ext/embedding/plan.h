@@ -16,6 +16,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/common/live_box.h>
 #include <vcg_ext/embedding/adjacency.h>
 #include <vcg_ext/embedding/face_split.h>
 #include <vcg_ext/embedding/locate.h>
@@ -55,10 +56,7 @@ public:
         if (!bad.empty()) return Fail(bad);
         plan.vertexCount = int(m.vert.size());
         plan.faceCount = int(m.face.size());
-        vcg::Box3<double> box;
-        for (const VertexType &v : m.vert)
-            if (!v.IsD()) box.Add(EmbedVec::Construct(v.cP()));
-        tol = plan.tolerance = r.tolerance = tolerancePercent / 100.0 * box.Diag();
+        tol = plan.tolerance = r.tolerance = tolerancePercent / 100.0 * LiveVertexBox(m).Diag();
         if (!(tol > 0)) return Fail("the mesh has a zero bounding box");
 
         Progress(cb, 8, "Split along front: locating points");
