@@ -71,8 +71,7 @@ public:
             if (pg.size[face] < 4) return 1.0;
             P3 q[4];
             pg.Points(face, position, q);
-            if (IsFolded(q) || !(VectorArea(q, 4).Norm() > 0)) return -1.0;
-            return ScaledJacobian(q, pg.NormalUnder(face, position, surface));
+            return OutputPolygons::QuadJacobian(q, surface);
         };
         auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0; };
         Stats st;
@@ -355,20 +354,17 @@ private:
         for (int v : {A, B})
             if (v >= 0 && touched[v]) return -1;
         auto facesInput = [&](std::initializer_list<int> corners) {
-            P3 q[4], centroid(0, 0, 0);
+            P3 q[4];
             int count = 0;
-            for (int v : corners) centroid += (q[count++] = position(v));
-            const P3 area = vcg_ext::VectorArea(q, count);
-            return area.Norm() > 0 && surface.FacesEveryClosest(centroid / double(count), area);
+            for (int v : corners) q[count++] = position(v);
+            return OutputPolygons::FacesInput(q, count, surface);
         };
         if (n == 3) {
             if (!facesInput({Q, M, A}) || !facesInput({M, P, A})) return -1;
         } else {
             const P3 q[4] = {position(Q), position(M), position(A), position(B)};
-            const P3 area = vcg_ext::VectorArea(q, 4);
-            if (IsFolded(q) || !(area.Norm() > 0) || !facesInput({M, P, A}) || !facesInput({Q, M, A, B})) return -1;
-            const P3 normal = surface.NormalUnder((q[0] + q[1] + q[2] + q[3]) / 4.0, area / area.Norm());
-            if (ScaledJacobian(q, normal) < std::min(kConvex, jacobian(across))) return -1;
+            if (IsFolded(q) || !facesInput({M, P, A}) || !facesInput({Q, M, A, B})) return -1;
+            if (OutputPolygons::QuadJacobian(q, surface) < std::min(kConvex, jacobian(across))) return -1;
             const int w = f.FFi(k);
             const int z = (w + 1) % 3;
             if (g->IsF(z)) {  // the diagonal P B: turned to Q A, so the chord's triangle is Q P A

@@ -69,9 +69,9 @@ struct OutputPolygons {
     template <class Position>
     P3 Centroid(int face, Position position) const
     {
-        P3 c(0, 0, 0);
-        for (int k = 0; k < size[face]; ++k) c += position(corners[face][k]);
-        return c / double(size[face]);
+        P3 q[4];
+        Points(face, position, q);
+        return Centroid(q, size[face]);
     }
 
     // The input's unit normal under `face`'s centroid (InputSurface::NormalUnder; its own direction
@@ -79,8 +79,9 @@ struct OutputPolygons {
     template <class Position, class Surface>
     P3 NormalUnder(int face, Position position, Surface &surface) const
     {
-        const P3 own = VectorArea(face, position);
-        return surface.NormalUnder(Centroid(face, position), own.Norm() > 0 ? own / own.Norm() : own);
+        P3 q[4];
+        Points(face, position, q);
+        return NormalUnder(q, size[face], surface);
     }
 
     // Whether `face` has an area and faces the way of every input triangle closest to its centroid
@@ -88,8 +89,38 @@ struct OutputPolygons {
     template <class Position, class Surface>
     bool FacesInput(int face, Position position, Surface &surface) const
     {
-        const P3 a = VectorArea(face, position);
-        return a.Norm() > 0 && surface.FacesEveryClosest(Centroid(face, position), a);
+        P3 q[4];
+        Points(face, position, q);
+        return FacesInput(q, size[face], surface);
+    }
+
+    // The same two for a polygon given by its n corners q (counter-clockwise): one not in the
+    // output yet (a collapse's or a flip's result).
+    template <class Surface>
+    static P3 NormalUnder(const P3 *q, int n, Surface &surface)
+    {
+        const P3 own = vcg_ext::VectorArea(q, n);
+        return surface.NormalUnder(Centroid(q, n), own.Norm() > 0 ? own / own.Norm() : own);
+    }
+    template <class Surface>
+    static bool FacesInput(const P3 *q, int n, Surface &surface)
+    {
+        const P3 a = vcg_ext::VectorArea(q, n);
+        return a.Norm() > 0 && surface.FacesEveryClosest(Centroid(q, n), a);
+    }
+    // A quad's scaled Jacobian on the input's normal under it (as the quality report reads it); -1
+    // when it is folded or has no area.
+    template <class Surface>
+    static double QuadJacobian(const P3 *q, Surface &surface)
+    {
+        if (IsFolded(q) || !(vcg_ext::VectorArea(q, 4).Norm() > 0)) return -1.0;
+        return ScaledJacobian(q, NormalUnder(q, 4, surface));
+    }
+    static P3 Centroid(const P3 *q, int n)
+    {
+        P3 c(0, 0, 0);
+        for (int k = 0; k < n; ++k) c += q[k];
+        return c / double(n);
     }
 
     // The corners of `face` in vertex index order.
