@@ -369,3 +369,54 @@ TEST(FlippedFaceMend, ANeedleIsFlippedAwayWithThePolygonAcrossItsLongestSide)
     EXPECT_EQ(free.m.vn, vertices - 1);
     EXPECT_EQ(FacesTurnedOver(free.m), 0);
 }
+
+// A needle whose longest side is on the front (no flip) and whose short sides have half of a quad
+// across (man, kept aside: a needle along a thin fin) is collapsed with that half: its free apex
+// goes onto a corner, the quad's other half is left a triangle in its place (its diagonal no
+// longer faux), the mesh stays a 2-manifold facing the input, the front side is kept. On each of the
+// four unit sides of the star, the triangles across the short sides are made halves of quads with
+// their cell's other triangle (one of the two: the other's cell diagonal is the needle's side).
+TEST(FlippedFaceMend, ANeedleIsCollapsedWithHalfOfAQuadAcrossAShortSide)
+{
+    for (int which = 0; which < 4; ++which) {
+        NeedleGrid grid(false, which);
+        int quads = 0;
+        for (int d = 1; d < 3; ++d) {
+            TFace *t = grid.needle->FFp((grid.side + d) % 3);
+            const TFace &original = grid.input.face[vcg::tri::Index(grid.m, t)];
+            for (int e = 0; e < 3; ++e)
+                if (vcg::Distance(original.cP0(e), original.cP1(e)) > 1.1f && t->FFp(e) != grid.needle && t->FFp(e) != t) {
+                    t->SetF(e);
+                    t->FFp(e)->SetF(t->FFi(e));
+                    ++quads;
+                }
+        }
+        ASSERT_EQ(quads, 1) << which;
+        grid.needle->SetFaceEdgeS(grid.side);
+        grid.needle->FFp(grid.side)->SetFaceEdgeS(grid.needle->FFi(grid.side));
+        ASSERT_EQ(grid.Needles(), 1);
+        const int faces = grid.m.fn, vertices = grid.m.vn, faux = grid.FauxSides();
+        vcg_ext::InputSurface<TMesh> surface(grid.input);
+        const Mend::Stats st = Mend::Do(grid.m, surface, 60);
+        EXPECT_EQ(st.needlesRemoved, 1) << which;
+        EXPECT_EQ(st.collapsed, 1);
+        EXPECT_EQ(st.needlesFlipped, 0);
+        EXPECT_EQ(st.quadsHalved, 1);
+        EXPECT_EQ(st.removedPolygons.size(), 1u) << "the quad's half left keeps its place";
+        EXPECT_EQ(grid.Needles(), 0);
+        EXPECT_EQ(grid.m.fn, faces - 2);
+        EXPECT_EQ(grid.m.vn, vertices - 1);
+        EXPECT_EQ(grid.FauxSides(), faux - 2);
+        EXPECT_EQ(FacesTurnedOver(grid.m), 0);
+        int front = 0;
+        for (TFace &f : grid.m.face)
+            for (int k = 0; k < 3; ++k) {
+                front += f.IsFaceEdgeS(k);
+                if (f.FFp(k) == &f) continue;
+                EXPECT_EQ(f.FFp(k)->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
+                EXPECT_EQ(f.IsF(k), f.FFp(k)->IsF(f.FFi(k))) << "a faux side on one face only";
+                EXPECT_FALSE(f.IsB(k)) << "an inner side flagged as border";
+            }
+        EXPECT_EQ(front, 2) << "the front side kept, on both its faces";
+    }
+}

@@ -152,9 +152,11 @@ public:
                                  mend.mended, mend.needlesRemoved)
                         : std::string()) +
                    (mend.split || mend.collapsed || mend.needlesFlipped
-                        ? Format(" (%d triangles split on the sheet they face, %d collapsed with the triangle across a side, "
+                        ? Format(" (%d triangles split on the sheet they face, %d collapsed with the triangle across a side%s, "
                                  "%d needles flipped away with the polygon across their longest side)",
-                                 mend.split, mend.collapsed, mend.needlesFlipped)
+                                 mend.split, mend.collapsed,
+                                 mend.quadsHalved ? Format(" (%d of them half of a quad, left a triangle)", mend.quadsHalved).c_str() : "",
+                                 mend.needlesFlipped)
                         : std::string());
         }
     };
@@ -276,6 +278,9 @@ private:
     // input's own density) the quads had mean scaled Jacobian 0.82-0.89 and 11-21% irregular
     // vertices; every shared mesh that met the quality bars had at least 6.4.
     static constexpr double kMinRowsAcross = 8;
+    // Rounds of the output's last check (FlippedFaceMend): one is enough on every mesh measured but
+    // man (kept aside), which needs two.
+    static constexpr int kMendRounds = 3;
     // The re-meshing's share of the progress bar (about half of the stage's time on big scans).
     static constexpr int kRemeshProgress = 50;
 
@@ -397,17 +402,23 @@ private:
             return QuadQuality::Measure(pm, input.NormalsUnder(pm, out.referenceNormals));
         };
         res.quality = measure();
-        const QuadQualityReport &q = res.quality;
-        // the last check, only when needed
-        if (q.flippedFaces || q.invertedQuads || q.foldedQuads || qmorph::FlippedFaceMend<MeshType>::HasNeedleTriangle(m)) {
+        // the last check, only when needed; again while a round collapsed, flipped or split faces
+        // and left something to mend: the faces around one it could not mend may have changed (a
+        // needle next to a flipped triangle along a thin fin: man, kept aside)
+        for (int round = 0; round < kMendRounds; ++round) {
+            const QuadQualityReport &q = res.quality;
+            if (!(q.flippedFaces || q.invertedQuads || q.foldedQuads || qmorph::FlippedFaceMend<MeshType>::HasNeedleTriangle(m))) break;
             Progress(cb, 99, "Q-Morph: flipped faces");
-            res.mend = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg);
-            for (const auto &same : res.mend.sameNormalAs) out.referenceNormals[same.first] = out.referenceNormals[same.second];
-            for (auto p = res.mend.removedPolygons.rbegin(); p != res.mend.removedPolygons.rend(); ++p)
+            const typename qmorph::FlippedFaceMend<MeshType>::Stats mend = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg);
+            for (const auto &same : mend.sameNormalAs) out.referenceNormals[same.first] = out.referenceNormals[same.second];
+            for (auto p = mend.removedPolygons.rbegin(); p != mend.removedPolygons.rend(); ++p)
                 out.referenceNormals.erase(out.referenceNormals.begin() + *p);
-            out.referenceNormals.insert(out.referenceNormals.end(), res.mend.splitNormals.begin(), res.mend.splitNormals.end());
-            res.triangles += 2 * res.mend.split - 2 * res.mend.collapsed;
-            if (res.mend.mended || res.mend.needlesRemoved) res.quality = measure();
+            out.referenceNormals.insert(out.referenceNormals.end(), mend.splitNormals.begin(), mend.splitNormals.end());
+            res.triangles += 2 * mend.split - 2 * (mend.collapsed - mend.quadsHalved);
+            res.quads -= mend.quadsHalved;
+            res.mend.Add(mend);
+            if (mend.mended || mend.needlesRemoved) res.quality = measure();
+            if (!(mend.split || mend.collapsed || mend.needlesFlipped)) break;
         }
     }
 

@@ -8,11 +8,12 @@
 // touching: man, two bones side by side: bones), that centroid may project onto the sheet behind;
 // then places around the corner are tried on the sheet the face faces. Corners on the front, on a
 // border or on a sharp crease of the input never move.
-// A triangle no move mends is removed by collapsing a side with the triangle across it (tiny
-// triangles at the fingers of man, kept aside), else split on the sheet it faces. A needle (its
-// apex on its longest side), flipped or not, is removed too: collapsed, else flipped away with the
-// polygon across its longest side (lying along a sharp crease of the input, which side it faces
-// is a tie any judge breaks its own way: diplodocus' fin, kept aside).
+// A triangle no move mends is removed by collapsing a side with the triangle across it, or with
+// half of a quad across it (tiny triangles at the fingers of man, kept aside), else split on the
+// sheet it faces. A needle (its apex on its longest side), flipped or not, is removed too:
+// collapsed, else flipped away with the polygon across its longest side (lying along a sharp
+// crease of the input, which side it faces is a tie any judge breaks its own way: diplodocus' fin,
+// kept aside). The caller runs it again while a round changed faces (QMorph::kMendRounds).
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -50,12 +51,25 @@ public:
         int mended = 0;  // flipped faces and inverted quads found and turned back
         int split = 0;      // of those, triangles split in three on the sheet they face
         int collapsed = 0;  // triangles removed by collapsing a side with the triangle across it (flipped ones and needles)
+        int quadsHalved = 0;  // of those, collapsed with half of a quad: the quad's other half is left a triangle
         int needlesRemoved = 0;  // needle triangles not found flipped, removed by a collapse or a flip
         int needlesFlipped = 0;  // needles (flipped or not) removed by flipping their longest side
         std::vector<std::pair<int, int>> sameNormalAs;  // (polygon, polygon): the first now lies where the second was judged
         int left = 0;       // those no move could mend
         std::vector<int> removedPolygons;  // the collapsed triangles' polygons (in the order of the output's polygons), ascending
         std::vector<P3> splitNormals;  // per face added by the splits (appended to m.face, two per split): the normal it faces
+
+        // Another round's counts added (`left`: what that round left); the lists are per round.
+        void Add(const Stats &round)
+        {
+            mended += round.mended;
+            split += round.split;
+            collapsed += round.collapsed;
+            quadsHalved += round.quadsHalved;
+            needlesRemoved += round.needlesRemoved;
+            needlesFlipped += round.needlesFlipped;
+            left = round.left;
+        }
     };
 
     // m in MeshLab's polygonal form (faux-edge quads), with face-face adjacency; front edges are
@@ -155,7 +169,8 @@ public:
                 else ++st.needlesRemoved;
                 removed[face] = removed[across] = 1;
                 st.removedPolygons.push_back(face);
-                st.removedPolygons.push_back(across);
+                if (pg.size[across] == 4) ++st.quadsHalved;  // left a triangle, in the quad's place
+                else st.removedPolygons.push_back(across);
                 continue;
             }
             across = FlipNeedleSide(m, pg, face, polygonOf, touched, position, jacobian, surface);
@@ -239,9 +254,13 @@ private:
     // condition holds (the surface stays a 2-manifold of the same genus) and every other polygon
     // around u, with u at w, faces the input and no quad is folded or made worse (as a corner move
     // is judged). Tiny triangles at the fingers of a scan are what no move mends (man, kept aside).
+    // The triangle across may be half of a quad: its other half is then left a triangle, which
+    // must face the input and not be a needle (man's needles along a thin fin have quads across
+    // their short sides, kept aside); only when the quad's two halves are consecutive faces, so
+    // that the triangle keeps the quad's place in the output's order.
     // vcglib's FFEdgeCollapse does it (faces deleted, not compacted; face-face adjacency kept
-    // valid); a front edge on either side it glues keeps its selection on both. Returns the
-    // polygon of the triangle across, or -1.
+    // valid); a front edge on either side it glues keeps its selection on both, and a faux side
+    // glued to a real one (the quad's half left) becomes real. Returns the polygon across, or -1.
     template <class Position, class Faces, class Jacobian>
     static int CollapseSide(MeshType &m, const OutputPolygons &pg, int face, const std::vector<int> &polygonOf,
                             std::vector<char> &touched, Position position, Faces facesInput, Jacobian jacobian,
@@ -260,7 +279,13 @@ private:
             if (g == &f || f.IsFaceEdgeS(k) || f.IsF(k)) continue;
             const int j = f.FFi(k);
             const int across = polygonOf[vcg::tri::Index(m, g)];
-            if (across < 0 || pg.size[across] != 3 || touched[index(g->V2(j))] || !vcg::face::FFLinkCondition(f, k)) continue;
+            if (across < 0 || touched[index(g->V2(j))] || !vcg::face::FFLinkCondition(f, k)) continue;
+            FaceType *half = nullptr;  // the quad's other half, left a triangle
+            if (pg.size[across] == 4) {
+                for (int z = 0; z < 3; ++z)
+                    if (g->IsF(z)) half = g->FFp(z);
+                if (!half || std::abs(long(vcg::tri::Index(m, g)) - long(vcg::tri::Index(m, half))) != 1 || touched[index(half->V(0))] || touched[index(half->V(1))] || touched[index(half->V(2))]) continue;
+            }
             for (int end = 0; end < 2; ++end) {
                 // FFEdgeCollapse(t, e) moves t's V0(e) onto its V1(e): f's side k one way, g's side j the other
                 FaceType &t = end == 0 ? f : *g;
@@ -280,6 +305,10 @@ private:
                     if (h == face || h == across) continue;
                     fine = facesInput(h) && jacobian(h) >= before[i];
                 }
+                if (half && fine) {
+                    const P3 q[3] = {P3::Construct(half->cP(0)), P3::Construct(half->cP(1)), P3::Construct(half->cP(2))};
+                    fine = OutputPolygons::FacesInput(q, 3, surface) && NeedleSide(q) < 0;
+                }
                 m.vert[u].P() = old;
                 if (!fine) continue;
                 std::vector<VertexType *> ring;
@@ -291,18 +320,22 @@ private:
                     for (int d = 1; d < 3; ++d) glued[2 * s + d - 1] = {tri.FFp((side + d) % 3), tri.FFi((side + d) % 3)};
                 }
                 vcg::face::FFEdgeCollapse(m, t, e);
-                // a front edge on either glued side stays one on both; vcglib's detach leaves the
-                // border bit on sides that are glued again
+                // a front edge on either glued side stays one on both, a faux one (the quad's half
+                // left) becomes real; vcglib's detach leaves the border bit on sides that are
+                // glued again
                 for (int s = 0; s < 4; s += 2) {
                     auto &x = glued[s], &y = glued[s + 1];
                     const bool front = x.first->IsFaceEdgeS(x.second) || y.first->IsFaceEdgeS(y.second);
                     for (auto &side : {x, y}) {
                         side.first->ClearB(side.second);
+                        side.first->ClearF(side.second);
                         if (front) side.first->SetFaceEdgeS(side.second);
                     }
                 }
                 touched[u] = touched[w] = 1;
                 for (VertexType *v : ring) touched[index(v)] = 1;
+                if (half)
+                    for (int c = 0; c < 3; ++c) touched[index(half->V(c))] = 1;
                 return across;
             }
         }
@@ -314,13 +347,18 @@ private:
     // whichever way a judge breaks the tie). Returns that side, or -1.
     static int NeedleSide(const FaceType &f)
     {
+        const P3 p[3] = {P3::Construct(f.cP(0)), P3::Construct(f.cP(1)), P3::Construct(f.cP(2))};
+        return NeedleSide(p);
+    }
+    static int NeedleSide(const P3 *p)
+    {
         int k = 0;
         double longest = 0;
         for (int e = 0; e < 3; ++e) {
-            const double l = vcg::Distance(P3::Construct(f.cP0(e)), P3::Construct(f.cP1(e)));
+            const double l = vcg::Distance(p[e], p[(e + 1) % 3]);
             if (l > longest) longest = l, k = e;
         }
-        const P3 a = P3::Construct(f.cP0(k)), b = P3::Construct(f.cP1(k)), apex = P3::Construct(f.cP2(k));
+        const P3 a = p[k], b = p[(k + 1) % 3], apex = p[(k + 2) % 3];
         const double height = ((b - a) ^ (apex - a)).Norm() / longest;
         return longest > 0 && height < kNeedleHeight * longest ? k : -1;
     }
