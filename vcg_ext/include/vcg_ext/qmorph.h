@@ -38,6 +38,7 @@
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/qmorph/all_quads.h>
 #include <vcg_ext/qmorph/feature_remesh.h>
+#include <vcg_ext/qmorph/flat_quad_split.h>
 #include <vcg_ext/qmorph/flipped_face_mend.h>
 #include <vcg_ext/qmorph/front_node_plan.h>
 #include <vcg_ext/qmorph/worst_element_smoothing.h>
@@ -105,6 +106,7 @@ public:
         qmorph::PatchStats ops;
         typename qmorph::WorstElementSmoothing<MeshType>::Stats shape;  // the output's final shape pass
         typename qmorph::FlippedFaceMend<MeshType>::Stats mend;         // the output's last check
+        int flatQuadsSplit = 0;  // quads with a straight corner at a node that never moves, split in two triangles
         QuadQualityReport quality;
         double seconds = 0;
         double remeshSeconds = 0;  // the re-meshing's share of `seconds` (not in RemeshSummary: runs compare it)
@@ -147,6 +149,8 @@ public:
                    (shape.moves ? Format("; worst elements raised: %d corners moved, elements below 0.3 %d -> %d", shape.moves,
                                          shape.poorBefore, shape.poorAfter)
                                 : std::string()) +
+                   (flatQuadsSplit ? Format("; %d quads with a straight corner at a fixed node split into two triangles", flatQuadsSplit)
+                                   : std::string()) +
                    (mend.mended || mend.needlesRemoved
                         ? Format("; last check: %d faces found flipped or inverted and turned back, %d needle triangles removed",
                                  mend.mended, mend.needlesRemoved)
@@ -396,6 +400,19 @@ private:
             Progress(cb, 99, "Q-Morph: raising the worst elements");
             res.shape = qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
         }
+        if (par.rescueBadQuads && !par.allQuads) {
+            const std::vector<int> polygonBefore = PolygonOfFace(m);
+            res.flatQuadsSplit = qmorph::FlatQuadSplit<MeshType>::Do(m, input, par.creaseAngleDeg);
+            res.quads -= res.flatQuadsSplit;
+            res.triangles += 2 * res.flatQuadsSplit;
+            if (res.flatQuadsSplit) {  // a split quad's second face is a polygon of its own now, with the quad's normal
+                std::vector<P3> normals;
+                QuadQuality::ForEachFauxPolygon(m, [&](FaceType &f, const std::array<int, 4> &, int) {
+                    normals.push_back(out.referenceNormals[polygonBefore[vcg::tri::Index(m, f)]]);
+                });
+                out.referenceNormals.swap(normals);
+            }
+        }
         Progress(cb, 99, "Q-Morph: quality report");
         auto measure = [&]() {
             const PolygonMesh pm = QuadQuality::FromFauxMesh(m);
@@ -420,6 +437,21 @@ private:
             if (mend.mended || mend.needlesRemoved) res.quality = measure();
             if (!(mend.split || mend.collapsed || mend.needlesFlipped)) break;
         }
+    }
+
+    // Per face of m (MeshLab's polygonal form): the index of its polygon in the output's order.
+    static std::vector<int> PolygonOfFace(MeshType &m)
+    {
+        std::vector<int> polygon(m.face.size(), -1);
+        int count = 0;
+        QuadQuality::ForEachFauxPolygon(m, [&](FaceType &f, const std::array<int, 4> &, int n) {
+            polygon[vcg::tri::Index(m, f)] = count;
+            if (n == 4)
+                for (int k = 0; k < 3; ++k)
+                    if (f.IsF(k)) polygon[vcg::tri::Index(m, f.FFp(k))] = count;
+            ++count;
+        });
+        return polygon;
     }
 
     // The per-patch parameters (angles in radians) from the filter's.
