@@ -401,7 +401,7 @@ private:
             res.shape = qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
         }
         if (par.rescueBadQuads && !par.allQuads) {
-            const std::vector<int> polygonBefore = PolygonOfFace(m);
+            const std::vector<int> polygonBefore = qmorph::OutputPolygons::PolygonOfFace(m);
             res.flatQuadsSplit = qmorph::FlatQuadSplit<MeshType>::Do(m, input, par.creaseAngleDeg);
             res.quads -= res.flatQuadsSplit;
             res.triangles += 2 * res.flatQuadsSplit;
@@ -437,21 +437,6 @@ private:
             if (mend.mended || mend.needlesRemoved) res.quality = measure();
             if (!(mend.split || mend.collapsed || mend.needlesFlipped)) break;
         }
-    }
-
-    // Per face of m (MeshLab's polygonal form): the index of its polygon in the output's order.
-    static std::vector<int> PolygonOfFace(MeshType &m)
-    {
-        std::vector<int> polygon(m.face.size(), -1);
-        int count = 0;
-        QuadQuality::ForEachFauxPolygon(m, [&](FaceType &f, const std::array<int, 4> &, int n) {
-            polygon[vcg::tri::Index(m, f)] = count;
-            if (n == 4)
-                for (int k = 0; k < 3; ++k)
-                    if (f.IsF(k)) polygon[vcg::tri::Index(m, f.FFp(k))] = count;
-            ++count;
-        });
-        return polygon;
     }
 
     // The per-patch parameters (angles in radians) from the filter's.

@@ -1,6 +1,6 @@
 // The geometry of one polygon (3 or 4 corners, counter-clockwise), one implementation for every
 // module: its vector area (normal times area, right for non-planar quads too), the side of an
-// equilateral tiling, the angle between two vectors, the scaled Jacobian of a quad, and the
+// equilateral tiling, the angle between two vectors, a triangle's smallest angle, the scaled Jacobian of a quad, and the
 // closest point of a triangle.
 #ifndef VCG_EXT_COMMON_POLYGON_GEOMETRY_H
 #define VCG_EXT_COMMON_POLYGON_GEOMETRY_H
@@ -38,6 +38,12 @@ inline double AngleBetween(const Vec3d &u, const Vec3d &v)
     if (!(nu > 0 && nv > 0)) return 0;
     const double c = (u * v) / (nu * nv);
     return std::acos(std::max(-1.0, std::min(1.0, c)));
+}
+
+// Smallest corner angle (radians) of the triangle a b c.
+inline double TriangleMinAngle(const Vec3d &a, const Vec3d &b, const Vec3d &c)
+{
+    return std::min({AngleBetween(b - a, c - a), AngleBetween(a - b, c - b), AngleBetween(a - c, b - c)});
 }
 
 // Scaled Jacobian of the quad q[0..3] against the unit normal n: the least over the corners of

@@ -101,12 +101,7 @@ private:
         }
         return flat;
     }
-    static double MinAngle(const P3 *t)
-    {
-        double least = 180;
-        for (int k = 0; k < 3; ++k) least = std::min(least, AngleBetween(t[(k + 1) % 3] - t[k], t[(k + 2) % 3] - t[k]) * 180 / M_PI);
-        return least;
-    }
+    static double MinAngle(const P3 *t) { return TriangleMinAngle(t[0], t[1], t[2]) * 180 / M_PI; }  // degrees
 
     // The quality report's threshold of a poor quad.
     static constexpr double kPoor = 0.3;

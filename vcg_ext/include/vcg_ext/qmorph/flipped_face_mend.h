@@ -144,13 +144,7 @@ public:
         }
         std::vector<int> leftTriangles;
         st.left = 0;
-        std::vector<int> polygonOf(m.face.size(), -1);  // per face of m: its polygon
-        for (int face = 0; face < pg.FaceCount(); ++face) {
-            FaceType &f = m.face[pg.face[face]];
-            polygonOf[pg.face[face]] = face;
-            for (int k = 0; k < 3; ++k)
-                if (f.IsF(k)) polygonOf[vcg::tri::Index(m, f.FFp(k))] = face;
-        }
+        const std::vector<int> polygonOf = OutputPolygons::PolygonOfFace(m);  // per face of m: its polygon
         std::vector<char> touched(m.vert.size(), 0);  // corners of a collapse's star: pg no longer describes them
         std::vector<char> removed(pg.FaceCount(), 0);
         int mendedByCollapse = 0;

@@ -51,6 +51,23 @@ struct OutputPolygons {
 
     int FaceCount() const { return int(size.size()); }
 
+    // Per face of m (MeshLab's polygonal form): the index of its polygon in the output's order
+    // (the order of Gather's polygons).
+    template <class MeshType>
+    static std::vector<int> PolygonOfFace(MeshType &m)
+    {
+        std::vector<int> polygon(m.face.size(), -1);
+        int count = 0;
+        QuadQuality::ForEachFauxPolygon(m, [&](typename MeshType::FaceType &f, const std::array<int, 4> &, int n) {
+            polygon[vcg::tri::Index(m, f)] = count;
+            if (n == 4)
+                for (int k = 0; k < 3; ++k)
+                    if (f.IsF(k)) polygon[vcg::tri::Index(m, f.FFp(k))] = count;
+            ++count;
+        });
+        return polygon;
+    }
+
     // The corners of `face` at their positions, counter-clockwise (q[0..size-1]).
     template <class Position>
     void Points(int face, Position position, P3 *q) const

@@ -167,7 +167,7 @@ public:
                      pd = P3::Construct(m.vert[d].cP());
             bool acDiagonal = p.diagonal != kEitherDiagonal
                                   ? p.diagonal == kDiagonal02
-                                  : std::min(MinAngle(pa, pb, pc), MinAngle(pa, pc, pd)) >= std::min(MinAngle(pb, pc, pd), MinAngle(pb, pd, pa));
+                                  : std::min(TriangleMinAngle(pa, pb, pc), TriangleMinAngle(pa, pc, pd)) >= std::min(TriangleMinAngle(pb, pc, pd), TriangleMinAngle(pb, pd, pa));
             // never a triangle upside down on the surface when the other diagonal avoids it
             auto up = [&](const P3 &x, const P3 &y, const P3 &z) { return ((y - x) ^ (z - x)) * referenceNormals[i] > 0; };
             const bool acUp = up(pa, pb, pc) && up(pa, pc, pd), bdUp = up(pb, pc, pd) && up(pb, pd, pa);
@@ -245,11 +245,6 @@ private:
         for (int k = 0; k < 4; ++k) side += (mm.pos[corner[(k + 1) % 4]] - mm.pos[corner[k]]).Norm();
         if (std::fabs(ac - bd) <= kFlatTolerance * side / 4) return kEitherDiagonal;
         return ac < bd ? kDiagonal02 : kDiagonal13;
-    }
-
-    static double MinAngle(const P3 &a, const P3 &b, const P3 &c)
-    {
-        return std::min({AngleBetween(b - a, c - a), AngleBetween(a - b, c - b), AngleBetween(a - c, b - c)});
     }
 };
 
