@@ -94,9 +94,7 @@ public:
     // against the mesh as the batch found it, then the batch is applied in vertex order, a vertex
     // tested again when a collapse before it in the batch changed a star its tests read: the same
     // collapses, in the same order, as one thread makes (the tests, closest-point searches on the
-    // input, are nearly all of the pass's time). That rests on two facts of this pass: a vertex is
-    // deleted only at its own turn, and an edge goes only with one of its ends (no flips here), so
-    // every star a collapse changes is one of the merged vertex's star's corners.
+    // input, are nearly all of the pass's time).
     // Returns the number of collapses.
     static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureOf &featureOf,
                   const CurveDeviation &toCurves, const std::function<void(double)> &progress = {}, int threads = 1)
