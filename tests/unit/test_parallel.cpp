@@ -10,7 +10,6 @@
 #include "test_mesh.h"
 #include <vcg_ext/common/parallel.h>
 #include <vcg_ext/qmorph.h>
-#include <vcg_ext/qmorph/feature_remesh.h>
 #include <vcg_ext/vsa_segmentation.h>
 
 using namespace qmf_test;
@@ -129,38 +128,4 @@ TEST(Parallel, QMorphReMeshedWritesTheSameBytesWithOneThreadAndWithTwo)
         if (threads == 1) reference = MeshBytes(m);
         else EXPECT_TRUE(MeshBytes(m) == reference) << "two threads changed the re-meshed output";
     }
-}
-
-// The re-meshing's collapse pass (qmorph/short_edge_collapse.h) tests a batch of vertices on the
-// pool against the mesh as the batch found it, then applies the batch in vertex order, testing a
-// vertex again when a collapse before it in the batch changed a star its tests read: the same
-// collapses as one thread makes. Debian's armadillo coarsened to twice its mean edge: most
-// vertices go, next to each other in index order, so many decisions of a batch go stale.
-TEST(Parallel, ReMeshingCollapsesTheSameWithOneThreadAndWithSeveral)
-{
-    TMesh base;
-    ASSERT_TRUE(LoadOff(base, MeshDir() + "/armadillo.off"));
-    double meanEdge = 0;
-    for (const TFace &f : base.face)
-        for (int k = 0; k < 3; ++k) meanEdge += vcg::Distance(f.cP0(k), f.cP1(k)) / (3.0 * base.fn);
-    std::vector<unsigned char> reference;
-    int collapses = 0;
-    for (int threads : {1, 2, 3}) {
-        TMesh m, input;
-        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, base);
-        vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, base);
-        vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
-        vcg::tri::UpdateTopology<TMesh>::VertexFace(m);
-        vcg_ext::InputSurface<TMesh> surface(input);
-        const auto st = vcg_ext::qmorph::FeatureRemesh<TMesh>::Do(m, surface, 2 * meanEdge, 1, 60, nullptr, 100, threads);
-        if (threads == 1) {
-            reference = MeshBytes(m);
-            collapses = st.collapses;
-            continue;
-        }
-        EXPECT_EQ(st.collapses, collapses);
-        EXPECT_TRUE(MeshBytes(m) == reference) << threads << " threads changed the re-meshed mesh";
-    }
-    // several batches of vertices (2048 each), most of the mesh's vertices removed
-    EXPECT_GT(collapses, base.vn / 2) << "the case needs most vertices collapsed";
 }

@@ -114,7 +114,7 @@ public:
                 char step[48];
                 std::snprintf(step, sizeof step, "collapses (%d%% of the vertices)", int(100 * done));
                 progress(kCollapseStart + done * (kFlipStart - kCollapseStart), step);
-            }, threads);
+            });
             progress(kFlipStart, "flips");
             st.flips += ValenceFlips<MeshType>::Do(m, surface, kSurfaceDistance * L);
             progress(kRelaxStart, "relaxation");

@@ -34,7 +34,6 @@
 #include <vcg/space/distance3.h>
 
 #include <vcg_ext/common/input_surface.h>
-#include <vcg_ext/common/parallel.h>
 
 namespace vcg_ext {
 namespace qmorph {
@@ -81,23 +80,14 @@ public:
     static constexpr double kMinQuality = 0.15;
     // Vertices between two progress reports (about a second on a big scan's first round).
     static constexpr size_t kProgressVertices = 1 << 15;
-    // With several threads: vertices tested together against one state of the mesh (a divisor
-    // of kProgressVertices), in chunks of kChunkVertices per work item. Smaller
-    // batches find fewer decisions changed by a collapse before them in the batch.
-    static constexpr size_t kBatchVertices = 1 << 11, kChunkVertices = 1 << 7;
 
     // One pass over the vertices; features are the selected face-edges (flagged on both sides, a
     // border edge on its one side). Needs face-face adjacency (rebuilt at the end); vertex-face
     // adjacency is rebuilt first.
     // `progress` (optional) gets the fraction of the vertices visited, every kProgressVertices.
-    // `threads` > 1: the tests of each batch of kBatchVertices vertices run on that many threads
-    // against the mesh as the batch found it, then the batch is applied in vertex order, a vertex
-    // tested again when a collapse before it in the batch changed a star its tests read: the same
-    // collapses, in the same order, as one thread makes (the tests, closest-point searches on the
-    // input, are nearly all of the pass's time).
     // Returns the number of collapses.
     static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureOf &featureOf,
-                  const CurveDeviation &toCurves, const std::function<void(double)> &progress = {}, int threads = 1)
+                  const CurveDeviation &toCurves, const std::function<void(double)> &progress = {})
     {
         vcg::tri::RequireVFAdjacency(m);
         std::vector<char> border(m.vert.size(), 0);
@@ -106,53 +96,43 @@ public:
                 for (int i = 0; i < 3; ++i)
                     if (f.FFp(i) == &f) border[vcg::tri::Index(m, f.V0(i))] = border[vcg::tri::Index(m, f.V1(i))] = 1;
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-        const Context context{surface, L, featureOf, toCurves, border};
         int collapses = 0;
-        auto apply = [&](const Decision &d) {
-            VertexPair pair(d.p, d.q);
-            Collapser::Do(m, pair, CoordType::Construct(d.X), true);
-            FlagFeaturesOnBothSides(d.q);
-            ++collapses;
-        };
-        const size_t n = m.vert.size();
-        if (threads <= 1) {
-            for (size_t vi = 0; vi < n; ++vi) {
-                if (progress && vi % kProgressVertices == 0) progress(double(vi) / double(n));
-                const Decision d = Decide(m, context, &m.vert[vi]);
-                if (d.q) apply(d);
-            }
-        } else {
-            // changedIn[v]: the last batch in which a collapse changed v's star or place
-            std::vector<int> changedIn(n, -1);
-            std::vector<Decision> decisions(kBatchVertices);
-            for (size_t first = 0, batch = 0; first < n; first += kBatchVertices, ++batch) {
-                if (progress && first % kProgressVertices == 0) progress(double(first) / double(n));
-                const size_t count = std::min(kBatchVertices, n - first);
-                const size_t chunks = (count + kChunkVertices - 1) / kChunkVertices;
-                OrderedParallelFor<int>(
-                    chunks, threads, {},
-                    [&](size_t chunk) {  // each chunk writes its own decisions, reading the mesh only
-                        for (size_t k = chunk * kChunkVertices; k < std::min(count, (chunk + 1) * kChunkVertices); ++k)
-                            decisions[k] = Decide(m, context, &m.vert[first + k]);
-                        return 0;
-                    },
-                    [](size_t, int &&) {}, [] {});
-                for (size_t k = 0; k < count; ++k) {
-                    const Decision *d = &decisions[k];
-                    const bool stale = std::any_of(d->read.begin(), d->read.end(),
-                                                   [&](VertexType *v) { return changedIn[vcg::tri::Index(m, v)] == int(batch); });
-                    Decision again;
-                    if (stale) {
-                        again = Decide(m, context, &m.vert[first + k]);
-                        d = &again;
+        std::vector<Neighbour> ring;
+        for (size_t vi = 0; vi < m.vert.size(); ++vi) {
+            if (progress && vi % kProgressVertices == 0) progress(double(vi) / double(m.vert.size()));
+            VertexType *p = &m.vert[vi];
+            if (p->IsD() || border[vi]) continue;
+            Ring(p, ring);
+            std::vector<VertexType *> candidates;
+            const int features = int(std::count_if(ring.begin(), ring.end(), [](const Neighbour &n) { return n.feature; }));
+            const double minLength = kMinLength * L;
+            if (features == 0) {
+                std::sort(ring.begin(), ring.end(), [p](const Neighbour &a, const Neighbour &b) {
+                    return Distance(p, a.v) < Distance(p, b.v);
+                });
+                for (const Neighbour &n : ring)
+                    if (Distance(p, n.v) < minLength) candidates.push_back(n.v);
+            } else if (features == 2) {
+                VertexType *ends[2];
+                FeatureKind kinds[2];
+                int k = 0;
+                for (const Neighbour &n : ring)
+                    if (n.feature) {
+                        kinds[k] = featureOf(Pos(p), Pos(n.v));
+                        ends[k++] = n.v;
                     }
-                    if (!d->q) continue;
-                    apply(*d);
-                    changedIn[vcg::tri::Index(m, d->q)] = int(batch);  // q and its star's corners
-                    for (vcg::face::VFIterator<FaceType> vfi(d->q); !vfi.End(); ++vfi)
-                        changedIn[vcg::tri::Index(m, vfi.V1())] = changedIn[vcg::tri::Index(m, vfi.V2())] = int(batch);
-                }
+                const bool sharp = kinds[0].sharp || kinds[1].sharp;
+                const double chord = sharp ? kStraightChord * std::min(Distance(p, ends[0]), Distance(p, ends[1])) : kChordTolerance * L;
+                if (kinds[0].front == kinds[1].front)  // a front chain and a crease stay apart
+                    for (int e = 0; e < 2; ++e)
+                        if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], L, chord, sharp, toCurves))
+                            candidates.push_back(ends[e]);
             }
+            for (VertexType *q : candidates)
+                if (TryCollapse(m, surface, p, q, features == 0 && !border[vcg::tri::Index(m, q)] && !OnFeature(q), L)) {
+                    ++collapses;
+                    break;
+                }
         }
         vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
         return collapses;
@@ -263,74 +243,14 @@ private:
         return true;
     }
 
-    // The collapse p -> q, p put at X, that passes every test, or none (q null). `read`: the
-    // vertices whose stars (faces, their corners' places and flags) the tests read, p and the
-    // candidates: a collapse that changes none of them leaves the decision as it is.
-    struct Decision {
-        VertexType *p = nullptr, *q = nullptr;
-        P3 X;
-        std::vector<VertexType *> read;
-    };
-    struct Context {
-        InputSurface<MeshType> &surface;
-        double L;
-        const FeatureOf &featureOf;
-        const CurveDeviation &toCurves;
-        const std::vector<char> &border;
-    };
-
-    // Which neighbour q, if any, p is merged with (reads the mesh only).
-    static Decision Decide(MeshType &m, const Context &c, VertexType *p)
-    {
-        Decision d;
-        d.p = p;
-        if (p->IsD() || c.border[vcg::tri::Index(m, p)]) return d;
-        std::vector<Neighbour> ring;
-        Ring(p, ring);
-        std::vector<VertexType *> candidates;
-        const int features = int(std::count_if(ring.begin(), ring.end(), [](const Neighbour &n) { return n.feature; }));
-        const double minLength = kMinLength * c.L;
-        if (features == 0) {
-            std::sort(ring.begin(), ring.end(), [p](const Neighbour &a, const Neighbour &b) {
-                return Distance(p, a.v) < Distance(p, b.v);
-            });
-            for (const Neighbour &n : ring)
-                if (Distance(p, n.v) < minLength) candidates.push_back(n.v);
-        } else if (features == 2) {
-            VertexType *ends[2];
-            FeatureKind kinds[2];
-            int k = 0;
-            for (const Neighbour &n : ring)
-                if (n.feature) {
-                    kinds[k] = c.featureOf(Pos(p), Pos(n.v));
-                    ends[k++] = n.v;
-                }
-            const bool sharp = kinds[0].sharp || kinds[1].sharp;
-            const double chord = sharp ? kStraightChord * std::min(Distance(p, ends[0]), Distance(p, ends[1])) : kChordTolerance * c.L;
-            if (kinds[0].front == kinds[1].front)  // a front chain and a crease stay apart
-                for (int e = 0; e < 2; ++e)
-                    if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], c.L, chord, sharp, c.toCurves))
-                        candidates.push_back(ends[e]);
-        }
-        d.read.push_back(p);
-        for (VertexType *q : candidates) {
-            d.read.push_back(q);
-            if (Allows(c.surface, p, q, features == 0 && !c.border[vcg::tri::Index(m, q)] && !OnFeature(q), c.L, d.X)) {
-                d.q = q;
-                break;
-            }
-        }
-        return d;
-    }
-
-    // Whether p may go into q: every triangle that changes stays right against the input surface.
-    // The merged vertex (X) goes to the edge's midpoint (on the input) when q is free too, else
-    // stays at q. The tests in the plane first: the closest-point searches are most of the cost.
-    static bool Allows(InputSurface<MeshType> &surface, VertexType *p, VertexType *q, bool qFree, double L, P3 &X)
+    // Removes p into q when every triangle that changes stays right against the input surface. The
+    // merged vertex goes to the edge's midpoint (on the input) when q is free too, else stays at q.
+    // The tests in the plane first: the closest-point searches are most of a collapse's cost.
+    static bool TryCollapse(MeshType &m, InputSurface<MeshType> &surface, VertexType *p, VertexType *q, bool qFree, double L)
     {
         VertexPair pair(p, q);
         if (!Collapser::LinkConditions(pair)) return false;
-        X = Pos(q);
+        P3 X = Pos(q);
         if (qFree) {
             CoordType onSurface;
             if (!surface.Closest(CoordType::Construct((Pos(p) + Pos(q)) * 0.5), onSurface)) return false;
@@ -344,7 +264,10 @@ private:
         }
         if (worstAfter < std::min(worstBefore, kMinQuality)) return false;
         if (std::max(nearestToP, nearestToQ) > kSurfaceDistance * L) return false;
-        return StarOnInput(surface, p, q, X, L) && (!qFree || StarOnInput(surface, q, p, X, L));
+        if (!StarOnInput(surface, p, q, X, L) || (qFree && !StarOnInput(surface, q, p, X, L))) return false;
+        Collapser::Do(m, pair, CoordType::Construct(X), true);
+        FlagFeaturesOnBothSides(q);
+        return true;
     }
 
     // A feature edge merged with a plain one (the triangle a-p-q of a chain collapse, whose edge a-q
