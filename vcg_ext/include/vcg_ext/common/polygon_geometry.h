@@ -1,7 +1,7 @@
 // The geometry of one polygon (3 or 4 corners, counter-clockwise), one implementation for every
 // module: its vector area (normal times area, right for non-planar quads too), the side of an
-// equilateral tiling, the angle between two vectors, a triangle's smallest angle, the scaled Jacobian of a quad, and the
-// closest point of a triangle.
+// equilateral tiling, the angle between two vectors, a triangle's smallest angle, the scaled
+// Jacobian of a quad, and the closest point of a triangle.
 #ifndef VCG_EXT_COMMON_POLYGON_GEOMETRY_H
 #define VCG_EXT_COMMON_POLYGON_GEOMETRY_H
 
