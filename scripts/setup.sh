@@ -71,7 +71,7 @@ fi
 
 # Real test meshes from Debian's libcgal-demo data (downloaded, never installed).
 MESHES="$DEPS/meshes"
-if [ ! -f "$MESHES/.done" ] || [ ! -f "$MESHES/femur.off" ]; then
+if [ ! -f "$MESHES/.done" ] || [ ! -f "$MESHES/man.off" ]; then
   echo "setup: extracting test meshes from libcgal-demo"
   apt_update
   rm -rf "$DEPS/cgal-dl"; mkdir -p "$DEPS/cgal-dl" "$MESHES"
@@ -79,7 +79,7 @@ if [ ! -f "$MESHES/.done" ] || [ ! -f "$MESHES/femur.off" ]; then
   dpkg-deb -x "$DEPS"/cgal-dl/libcgal-demo_*.deb "$DEPS/cgal-dl/x"
   tar -xzf "$DEPS/cgal-dl/x/usr/share/doc/libcgal-dev/data.tar.gz" -C "$DEPS/cgal-dl" \
       data/meshes/fandisk.off data/meshes/elephant.off data/meshes/joint.off data/meshes/anchor.off \
-      data/meshes/armadillo.off data/meshes/diplodocus.off data/meshes/femur.off
+      data/meshes/armadillo.off data/meshes/diplodocus.off data/meshes/femur.off data/meshes/man.off
   mv "$DEPS"/cgal-dl/data/meshes/*.off "$MESHES/"
   rm -rf "$DEPS/cgal-dl"
   touch "$MESHES/.done"
