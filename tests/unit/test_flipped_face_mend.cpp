@@ -15,6 +15,7 @@ using namespace qmf_test;
 namespace {
 
 typedef vcg_ext::qmorph::FlippedFaceMend<TMesh> Mend;
+typedef vcg::Point3d D3;
 
 // Faces of a mesh in the z = 0 plane (counter-clockwise seen from +z) turned over: normal down.
 int FacesTurnedOver(const TMesh &m)
@@ -419,4 +420,34 @@ TEST(FlippedFaceMend, ANeedleIsCollapsedWithHalfOfAQuadAcrossAShortSide)
             }
         EXPECT_EQ(front, 2) << "the front side kept, on both its faces";
     }
+}
+
+// A plate under a ridge: an upper sheet (a roof, z = 0.3 - 0.3 |x|, facing up) and a lower sheet
+// kPlate below it (facing down). A triangle with every corner on the upper sheet but turned down
+// is upside down; its centroid lies under the chord, nearer the lower sheet (0.134 against 0.153),
+// so the centroid's judge (the quality report's, evalquad's) reads it facing the input.
+TEST(FlippedFaceMend, AFaceUpsideDownOnAThinPlateIsFoundByItsCorners)
+{
+    const float kPlate = 0.02f;
+    TMesh plate;
+    Build(plate,
+          {{-1, -1, 0}, {0, -1, 0.3f}, {1, -1, 0}, {-1, 2, 0}, {0, 2, 0.3f}, {1, 2, 0},
+           {-1, -1, -kPlate}, {0, -1, 0.3f - kPlate}, {1, -1, -kPlate}, {-1, 2, -kPlate}, {0, 2, 0.3f - kPlate}, {1, 2, -kPlate}},
+          {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {6, 10, 7}, {6, 9, 10}, {7, 11, 8}, {7, 10, 11}});
+    vcg_ext::InputSurface<TMesh> input(plate);
+    typedef vcg_ext::qmorph::OutputPolygons Polygons;
+    const D3 a(-0.8, 0, 0.06), b(0.8, 0, 0.06), ridge(0, 1, 0.3);
+    const D3 down[3] = {a, ridge, b}, up[3] = {a, b, ridge};
+    EXPECT_LT(vcg_ext::VectorArea(down, 3)[2], 0);
+    EXPECT_TRUE(Polygons::FacesInput(down, 3, input)) << "the centroid's judge is fooled";
+    EXPECT_TRUE(Polygons::CornersFaceAway(down, 3, input));
+    EXPECT_FALSE(Polygons::FacesInput(up, 3, input)) << "turned up, its centroid is judged on the lower sheet";
+    EXPECT_FALSE(Polygons::CornersFaceAway(up, 3, input));
+    // a corner on a crease sharper than 90 degrees faces either way: not counted as facing away
+    TMesh knife;
+    Build(knife, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0.04f}, {0, 1, 0.04f}},
+          {{0, 2, 1}, {0, 3, 2}, {4, 1, 2}, {4, 2, 5}});
+    vcg_ext::InputSurface<TMesh> onKnife(knife);
+    const D3 edgeAndLower[3] = {D3(1, 0.2, 0), D3(1, 0.8, 0), D3(0.5, 0.5, 0)};  // turned up on the lower sheet
+    EXPECT_FALSE(Polygons::CornersFaceAway(edgeAndLower, 3, onKnife));
 }

@@ -103,6 +103,7 @@ public:
         typename qmorph::FeatureRemesh<MeshType>::Stats remesh;
         int quads = 0, triangles = 0;
         int pentagons = 0;  // all quads: triangles merged with a quad before the split (AllQuads::Stats)
+        int upsideDownBeforeSplit = 0;  // all quads: faces with every corner on input facing away, turned back first
         qmorph::PatchStats ops;
         typename qmorph::WorstElementSmoothing<MeshType>::Stats shape;  // the output's final shape pass
         typename qmorph::FlippedFaceMend<MeshType>::Stats mend;         // the output's last check
@@ -121,8 +122,18 @@ public:
                           patches, patchesWithoutFront, initialFrontEdges, creaseEdges, quads, triangles, 100 * quality.quadAreaFraction,
                           ops.quadsFormed, ops.templates, ops.seams, ops.transitionSeams, ops.transitionSplits, ops.pairedTriangles,
                           ops.doublets, ops.valenceTurns, ops.diagonalCollapses, ops.quadsOpened, ops.cavities, ops.swaps, ops.splits,
-                          pentagons ? Format("; all quads: %d triangles merged with a quad into a pentagon first", pentagons).c_str() : "",
+                          AllQuadsSummary().c_str(),
                           seconds);
+        }
+        // What the all-quads split did first ("" when nothing).
+        std::string AllQuadsSummary() const
+        {
+            std::string s;
+            if (pentagons) s += Format("; all quads: %d triangles merged with a quad into a pentagon first", pentagons);
+            if (upsideDownBeforeSplit)
+                s += Format("%s %d faces with every corner on input facing away turned back first", pentagons ? "," : "; all quads:",
+                            upsideDownBeforeSplit);
+            return s;
         }
         // The re-meshing in one line; empty when the patches were not re-meshed.
         std::string RemeshSummary() const
@@ -390,6 +401,10 @@ private:
             // first on the faces the split cuts too (a poor face only has poorer children); the log
             // counts the pass on the split mesh
             if (raiseWorst) qmorph::WorstElementSmoothing<MeshType>::Do(m, input, par.creaseAngleDeg);
+            // faces upside down on a thin plate whose centroid the judge reads right: their children
+            // would turn over (bones, diplodocus, man, kept aside: 46 -> 36 flipped quads)
+            Progress(cb, 99, "Q-Morph: all quads, upside-down faces");
+            res.upsideDownBeforeSplit = qmorph::FlippedFaceMend<MeshType>::Do(m, input, par.creaseAngleDeg, true).mended;
             Progress(cb, 99, "Q-Morph: all quads");
             const typename qmorph::AllQuads<MeshType>::Stats split = qmorph::AllQuads<MeshType>::Split(m, input, par.creaseAngleDeg);
             res.quads = split.quads;

@@ -15,6 +15,10 @@
 // crease of the input, which side it faces is a tie any judge breaks its own way: diplodocus' fin,
 // kept aside). The caller runs it again while a round changed faces (QMorph::kMendRounds).
 //
+// Before the all-quads split it also runs on faces whose every corner lies on an input triangle
+// facing away (OutputPolygons::CornersFaceAway, `byCorners`): judged right by their centroid, their
+// children would not be.
+//
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
 // edge inside one patch (where it comes from is not traced), and the all-quads split of a
@@ -76,7 +80,8 @@ public:
     // its selected face-edges. Moves vertices; a triangle no move mends, or a needle, is collapsed,
     // flipped away or (flipped) split (the face vectors are compacted when a collapse deleted
     // faces: the output's polygons keep their order, less `removedPolygons`).
-    static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg)
+    // byCorners: a face whose corners all lie on input triangles facing away counts as flipped too.
+    static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg, bool byCorners = false)
     {
         const OutputPolygons pg = OutputPolygons::Gather(m);
         auto position = [&](int v) { return P3::Construct(m.vert[v].cP()); };
@@ -87,7 +92,12 @@ public:
             pg.Points(face, position, q);
             return OutputPolygons::QuadJacobian(q, surface);
         };
-        auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0; };
+        auto cornersFaceAway = [&](int face) {
+            P3 q[4];
+            pg.Points(face, position, q);
+            return OutputPolygons::CornersFaceAway(q, pg.size[face], surface);
+        };
+        auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0 || (byCorners && cornersFaceAway(face)); };
         Stats st;
         std::vector<char> facedBefore;
         std::vector<double> jacobianBefore;

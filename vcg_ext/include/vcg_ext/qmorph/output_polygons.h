@@ -125,6 +125,22 @@ struct OutputPolygons {
         const P3 a = vcg_ext::VectorArea(q, n);
         return a.Norm() > 0 && surface.FacesEveryClosest(Centroid(q, n), a);
     }
+    // Whether every corner of the polygon q (n corners, counter-clockwise) lies on an input triangle
+    // facing away from it (NormalUnder at the corner; a corner on a crease sharper than 90 degrees
+    // counts as facing). Such a face is upside down even when its centroid is nearer a sheet it
+    // faces: where the input is a plate thinner than the face's chord error, the chord between
+    // corners on one sheet passes nearer the other (bones, kept aside). FacesInput, the judge of
+    // the quality report and of evalquad, calls it right; the smaller faces the all-quads split
+    // makes of it do not.
+    template <class Surface>
+    static bool CornersFaceAway(const P3 *q, int n, Surface &surface)
+    {
+        const P3 a = vcg_ext::VectorArea(q, n);
+        for (int k = 0; k < n; ++k)
+            if (!(surface.NormalUnder(q[k], P3(0, 0, 0)) * a < 0)) return false;
+        return true;
+    }
+
     // A quad's scaled Jacobian on the input's normal under it (as the quality report reads it); -1
     // when it is folded or has no area.
     template <class Surface>
