@@ -129,9 +129,9 @@ struct OutputPolygons {
     // facing away from it (NormalUnder at the corner; a corner on a crease sharper than 90 degrees
     // counts as facing). Such a face is upside down even when its centroid is nearer a sheet it
     // faces: where the input is a plate thinner than the face's chord error, the chord between
-    // corners on one sheet passes nearer the other (bones, kept aside). FacesInput, the judge of
-    // the quality report and of evalquad, calls it right; the smaller faces the all-quads split
-    // makes of it do not.
+    // corners on one sheet passes nearer the other (bones, kept aside). FacesInput (the judge of
+    // the quality report, as of evalquad) passes such a face; the smaller faces the all-quads split
+    // makes of it fail.
     template <class Surface>
     static bool CornersFaceAway(const P3 *q, int n, Surface &surface)
     {
