@@ -268,15 +268,15 @@ TEST(FlippedFaceMend, ATriangleNoMoveMendsIsCollapsedWithTheTriangleAcrossItsSid
 
 namespace {
 // A flat 4 x 4 grid whose vertex (2, 2) is slid onto the middle of the side a b across one of its
-// triangles (the `which`-th of the four whose a b is a unit side; 1e-5 of the side inside): that
-// triangle becomes a needle. `across`: what lies across a b; `quadAcross`: the triangle across is
+// triangles (the `which`-th of the four whose a b is a unit side; `inside` of the side inside): that
+// triangle becomes a needle (a sliver for a larger `inside`). `across`: what lies across a b; `quadAcross`: the triangle across is
 // made half of a quad (faux cell diagonal).
 struct NeedleGrid {
     TMesh input, m;
     TFace *needle = nullptr, *across = nullptr;
     int side = -1;
 
-    NeedleGrid(bool quadAcross, int which = 0)
+    NeedleGrid(bool quadAcross, int which = 0, float inside = 1e-5f)
     {
         MakeGrid(input, 4, 4.f, 0.f, 1, false);  // diagonals all one way: (2, 2)'s star is a convex hexagon
         vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
@@ -288,7 +288,7 @@ struct NeedleGrid {
                 if (f.V(i) == v && vcg::Distance(f.P1(i), f.P2(i)) == 1.f && unitSides++ == which) needle = &f, side = (i + 1) % 3;
         across = needle->FFp(side);
         const P3 a = needle->P0(side), b = needle->P1(side), mid = (a + b) * 0.5f;
-        v->P() = mid + (v->P() - mid) * 1e-5f;
+        v->P() = mid + (v->P() - mid) * inside;
         if (quadAcross)
             for (int e = 0; e < 3; ++e)
                 if (vcg::Distance(across->P0(e), across->P1(e)) > 1.1f) {  // the cell's diagonal
@@ -296,13 +296,15 @@ struct NeedleGrid {
                     across->FFp(e)->SetF(across->FFi(e));
                 }
     }
-    int Needles() const
+    // Triangles whose apex is nearer their longest side than `height` of it.
+    int Needles(double height = 1e-3) const
     {
         int n = 0;
         for (const TFace &f : m.face) {
+            if (f.IsD()) continue;
             double longest = 0;
             for (int e = 0; e < 3; ++e) longest = std::max(longest, double(vcg::Distance(f.cP0(e), f.cP1(e))));
-            n += vcg::DoubleArea(f) < 1e-3 * longest * longest;
+            n += vcg::DoubleArea(f) < height * longest * longest;
         }
         return n;
     }
@@ -450,4 +452,32 @@ TEST(FlippedFaceMend, AFaceUpsideDownOnAThinPlateIsFoundByItsCorners)
     vcg_ext::InputSurface<TMesh> onKnife(knife);
     const D3 edgeAndLower[3] = {D3(1, 0.2, 0), D3(1, 0.8, 0), D3(0.5, 0.5, 0)};  // turned up on the lower sheet
     EXPECT_FALSE(Polygons::CornersFaceAway(edgeAndLower, 3, onKnife));
+}
+
+// With a larger needle height (All quads, before its split) a sliver goes as a needle does: the
+// grid's vertex slid to 3% of a side's length from it is no needle at the default height (nothing
+// happens), and at 5% it is removed, leaving no triangle thinner than that, none turned over; with
+// every corner on the front, by a flip of its longest side.
+TEST(FlippedFaceMend, ASliverIsRemovedAtALargerNeedleHeight)
+{
+    const double kSliver = 0.05;
+    for (bool front : {false, true}) {
+        NeedleGrid grid(false, 0, 0.03f);
+        if (front) {
+            TFace *acrossChord = grid.needle->FFp(grid.side);
+            for (TFace &f : grid.m.face)
+                for (int k = 0; k < 3; ++k)
+                    if (!(&f == grid.needle && k == grid.side) && !(&f == acrossChord && k == grid.needle->FFi(grid.side))) f.SetFaceEdgeS(k);
+        }
+        ASSERT_EQ(grid.Needles(), 0);
+        ASSERT_EQ(grid.Needles(kSliver), 1);
+        vcg_ext::InputSurface<TMesh> surface(grid.input);
+        EXPECT_EQ(Mend::Do(grid.m, surface, 60).needlesRemoved, 0);
+        EXPECT_EQ(grid.Needles(kSliver), 1);
+        const Mend::Stats st = Mend::Do(grid.m, surface, 60, false, kSliver);
+        EXPECT_EQ(st.needlesRemoved, 1) << (front ? "front" : "free");
+        EXPECT_EQ(front ? st.needlesFlipped : st.collapsed, 1);
+        EXPECT_EQ(grid.Needles(kSliver), 0);
+        EXPECT_EQ(FacesTurnedOver(grid.m), 0);
+    }
 }

@@ -17,7 +17,7 @@
 //
 // Before the all-quads split it also runs on faces whose every corner lies on an input triangle
 // facing away (OutputPolygons::CornersFaceAway, `byCorners`): judged right by their centroid, their
-// children would not be.
+// children would not be; and with a larger needle height, so that slivers go too.
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -80,8 +80,11 @@ public:
     // its selected face-edges. Moves vertices; a triangle no move mends, or a needle, is collapsed,
     // flipped away or (flipped) split (the face vectors are compacted when a collapse deleted
     // faces: the output's polygons keep their order, less `removedPolygons`).
-    // byCorners: a face whose corners all lie on input triangles facing away counts as flipped too.
-    static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg, bool byCorners = false)
+    // byCorners: a face whose corners all lie on input triangles facing away counts as flipped too;
+    // needleHeight: a triangle whose apex is nearer its longest side than this fraction of it is a
+    // needle (kNeedleHeight: degenerate once written in float; more: slivers).
+    static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg, bool byCorners = false,
+                    double needleHeight = kNeedleHeight)
     {
         const OutputPolygons pg = OutputPolygons::Gather(m);
         auto position = [&](int v) { return P3::Construct(m.vert[v].cP()); };
@@ -161,12 +164,12 @@ public:
         for (int face = 0; face < pg.FaceCount(); ++face) {
             if (removed[face]) continue;
             const bool isBad = bad(face);
-            if (!isBad && !(pg.size[face] == 3 && IsNeedle(m.face[pg.face[face]]))) continue;
+            if (!isBad && !(pg.size[face] == 3 && IsNeedle(m.face[pg.face[face]], needleHeight))) continue;
             if (isBad) ++st.left;
             if (pg.size[face] != 3) continue;
             // a flipped triangle or a needle: collapsed with the triangle across a side, else (a
             // needle) flipped away, else (flipped) split on the sheet it faces
-            int across = CollapseSide(m, pg, face, polygonOf, touched, position, facesInput, jacobian, surface, creaseAngleDeg);
+            int across = CollapseSide(m, pg, face, polygonOf, touched, position, facesInput, jacobian, surface, creaseAngleDeg, needleHeight);
             if (across >= 0) {
                 ++st.collapsed;
                 if (isBad) ++mendedByCollapse;
@@ -177,7 +180,7 @@ public:
                 else st.removedPolygons.push_back(across);
                 continue;
             }
-            across = FlipNeedleSide(m, pg, face, polygonOf, touched, position, jacobian, surface);
+            across = FlipNeedleSide(m, pg, face, polygonOf, touched, position, jacobian, surface, needleHeight);
             if (across >= 0) {
                 ++st.needlesRemoved;
                 ++st.needlesFlipped;
@@ -205,7 +208,7 @@ public:
     static bool HasNeedleTriangle(const MeshType &m)
     {
         for (const FaceType &f : m.face)
-            if (!f.IsD() && !f.IsF(0) && !f.IsF(1) && !f.IsF(2) && IsNeedle(f)) return true;
+            if (!f.IsD() && !f.IsF(0) && !f.IsF(1) && !f.IsF(2) && IsNeedle(f, kNeedleHeight)) return true;
         return false;
     }
 
@@ -256,8 +259,9 @@ private:
     // first, with the triangle across it: the side's free end u goes to its other end w (u on no
     // front edge or border; on a sharp crease of the input only if w is too), where vcglib's link
     // condition holds (the surface stays a 2-manifold of the same genus) and every other polygon
-    // around u, with u at w, faces the input and no quad is folded or made worse (as a corner move
-    // is judged). Tiny triangles at the fingers of a scan are what no move mends (man, kept aside).
+    // around u, with u at w, faces the input, no quad is folded or made worse (as a corner move
+    // is judged) and no triangle becomes a needle (one left by a collapse turned into children
+    // upside down in the all-quads split: block). Tiny triangles at the fingers of a scan are what no move mends (man, kept aside).
     // The triangle across may be half of a quad: its other half is then left a triangle, which
     // must face the input and not be a needle (man's needles along a thin fin have quads across
     // their short sides, kept aside); only when the quad's two halves are consecutive faces, so
@@ -268,7 +272,7 @@ private:
     template <class Position, class Faces, class Jacobian>
     static int CollapseSide(MeshType &m, const OutputPolygons &pg, int face, const std::vector<int> &polygonOf,
                             std::vector<char> &touched, Position position, Faces facesInput, Jacobian jacobian,
-                            InputSurface<MeshType> &surface, double creaseAngleDeg)
+                            InputSurface<MeshType> &surface, double creaseAngleDeg, double needleHeight)
     {
         FaceType &f = m.face[pg.face[face]];
         auto index = [&](const VertexType *v) { return int(vcg::tri::Index(m, v)); };
@@ -301,17 +305,21 @@ private:
                 // quad worse (as a corner move is judged)
                 const CoordType old = m.vert[u].cP();
                 std::vector<double> before;
-                for (int h : pg.facesOf[u]) before.push_back(std::min(kConvex, jacobian(h)));
+                std::vector<char> needleBefore;
+                for (int h : pg.facesOf[u]) {
+                    before.push_back(std::min(kConvex, jacobian(h)));
+                    needleBefore.push_back(IsNeedle(pg, h, position, needleHeight));
+                }
                 m.vert[u].P() = m.vert[w].cP();
                 bool fine = true;
                 for (size_t i = 0; i < pg.facesOf[u].size() && fine; ++i) {
                     const int h = pg.facesOf[u][i];
                     if (h == face || h == across) continue;
-                    fine = facesInput(h) && jacobian(h) >= before[i];
+                    fine = facesInput(h) && jacobian(h) >= before[i] && (needleBefore[i] || !IsNeedle(pg, h, position, needleHeight));
                 }
                 if (half && fine) {
                     const P3 q[3] = {P3::Construct(half->cP(0)), P3::Construct(half->cP(1)), P3::Construct(half->cP(2))};
-                    fine = OutputPolygons::FacesInput(q, 3, surface) && NeedleSide(q) < 0;
+                    fine = OutputPolygons::FacesInput(q, 3, surface) && NeedleSide(q, needleHeight) < 0;
                 }
                 m.vert[u].P() = old;
                 if (!fine) continue;
@@ -349,12 +357,12 @@ private:
     // A needle: its apex closer to its longest side than kNeedleHeight of that side (its normal is
     // rounding noise; lying along a sharp crease of the input, it faces one side or the other
     // whichever way a judge breaks the tie). Returns that side, or -1.
-    static int NeedleSide(const FaceType &f)
+    static int NeedleSide(const FaceType &f, double needleHeight)
     {
         const P3 p[3] = {P3::Construct(f.cP(0)), P3::Construct(f.cP(1)), P3::Construct(f.cP(2))};
-        return NeedleSide(p);
+        return NeedleSide(p, needleHeight);
     }
-    static int NeedleSide(const P3 *p)
+    static int NeedleSide(const P3 *p, double needleHeight)
     {
         int k = 0;
         double longest = 0;
@@ -364,24 +372,34 @@ private:
         }
         const P3 a = p[k], b = p[(k + 1) % 3], apex = p[(k + 2) % 3];
         const double height = ((b - a) ^ (apex - a)).Norm() / longest;
-        return longest > 0 && height < kNeedleHeight * longest ? k : -1;
+        return longest > 0 && height < needleHeight * longest ? k : -1;
     }
-    static bool IsNeedle(const FaceType &f) { return NeedleSide(f) >= 0; }
+    static bool IsNeedle(const FaceType &f, double needleHeight) { return NeedleSide(f, needleHeight) >= 0; }
+    // Whether polygon h of pg is a triangle and a needle.
+    template <class Position>
+    static bool IsNeedle(const OutputPolygons &pg, int h, Position position, double needleHeight)
+    {
+        if (pg.size[h] != 3) return false;
+        P3 q[4];
+        pg.Points(h, position, q);
+        return NeedleSide(q, needleHeight) >= 0;
+    }
 
     // A needle (polygon `face`, a triangle P Q M, M its apex near its longest side P Q) removed by
     // flipping P Q with the triangle across it, which M then splits: a triangle across (Q P X)
     // becomes Q M X and M P X; half of a quad (Q P A B) becomes the quad Q M A B and the triangle
     // M P A (the quad's diagonal first turned to Q A, so each polygon keeps its place in the output's
     // order: the quad where the quad was, the triangle where the needle was). Kept when the new
-    // faces face the input and the new quad is no worse than the old one (or than kConvex).
+    // faces face the input, are no needles, and the new quad is no worse than the old one (or than
+    // kConvex).
     // P Q must not be a front edge. Returns the polygon across, or -1.
     template <class Position, class Jacobian>
     static int FlipNeedleSide(MeshType &m, const OutputPolygons &pg, int face, const std::vector<int> &polygonOf,
                               std::vector<char> &touched, Position position, Jacobian jacobian,
-                              InputSurface<MeshType> &surface)
+                              InputSurface<MeshType> &surface, double needleHeight)
     {
         FaceType &f = m.face[pg.face[face]];
-        const int k = NeedleSide(f);
+        const int k = NeedleSide(f, needleHeight);
         if (k < 0 || f.IsFaceEdgeS(k) || f.IsF(k) || f.FFp(k) == &f) return -1;
         FaceType *g = f.FFp(k);
         const int across = polygonOf[vcg::tri::Index(m, g)];
@@ -401,11 +419,15 @@ private:
             for (int v : corners) q[count++] = position(v);
             return OutputPolygons::FacesInput(q, count, surface);
         };
+        auto needle = [&](int a, int b, int c) {
+            const P3 q[3] = {position(a), position(b), position(c)};
+            return NeedleSide(q, needleHeight) >= 0;
+        };
         if (n == 3) {
-            if (!facesInput({Q, M, A}) || !facesInput({M, P, A})) return -1;
+            if (!facesInput({Q, M, A}) || !facesInput({M, P, A}) || needle(Q, M, A) || needle(M, P, A)) return -1;
         } else {
             const P3 q[4] = {position(Q), position(M), position(A), position(B)};
-            if (IsFolded(q) || !facesInput({M, P, A}) || !facesInput({Q, M, A, B})) return -1;
+            if (IsFolded(q) || !facesInput({M, P, A}) || !facesInput({Q, M, A, B}) || needle(M, P, A)) return -1;
             if (OutputPolygons::QuadJacobian(q, surface) < std::min(kConvex, jacobian(across))) return -1;
             const int w = f.FFi(k);
             const int z = (w + 1) % 3;
