@@ -269,8 +269,8 @@ TEST(FlippedFaceMend, ATriangleNoMoveMendsIsCollapsedWithTheTriangleAcrossItsSid
 namespace {
 // A flat 4 x 4 grid whose vertex (2, 2) is slid onto the middle of the side a b across one of its
 // triangles (the `which`-th of the four whose a b is a unit side; `inside` of the side inside): that
-// triangle becomes a needle (a sliver for a larger `inside`). `across`: what lies across a b; `quadAcross`: the triangle across is
-// made half of a quad (faux cell diagonal).
+// triangle becomes a needle (a sliver for a larger `inside`). `across`: what lies across a b;
+// `quadAcross`: the triangle across is made half of a quad (faux cell diagonal).
 struct NeedleGrid {
     TMesh input, m;
     TFace *needle = nullptr, *across = nullptr;

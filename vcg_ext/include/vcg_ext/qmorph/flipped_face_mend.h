@@ -261,7 +261,8 @@ private:
     // condition holds (the surface stays a 2-manifold of the same genus) and every other polygon
     // around u, with u at w, faces the input, no quad is folded or made worse (as a corner move
     // is judged) and no triangle becomes a needle (one left by a collapse turned into children
-    // upside down in the all-quads split: block). Tiny triangles at the fingers of a scan are what no move mends (man, kept aside).
+    // upside down in the all-quads split: block). Tiny triangles at the fingers of a scan are what
+    // no move mends (man, kept aside).
     // The triangle across may be half of a quad: its other half is then left a triangle, which
     // must face the input and not be a needle (man's needles along a thin fin have quads across
     // their short sides, kept aside); only when the quad's two halves are consecutive faces, so
@@ -354,9 +355,9 @@ private:
         return -1;
     }
 
-    // A needle: its apex closer to its longest side than kNeedleHeight of that side (its normal is
-    // rounding noise; lying along a sharp crease of the input, it faces one side or the other
-    // whichever way a judge breaks the tie). Returns that side, or -1.
+    // A needle: its apex closer to its longest side than needleHeight of that side (at kNeedleHeight
+    // its normal is rounding noise; lying along a sharp crease of the input, it faces one side or the
+    // other whichever way a judge breaks the tie; larger: a sliver). Returns that side, or -1.
     static int NeedleSide(const FaceType &f, double needleHeight)
     {
         const P3 p[3] = {P3::Construct(f.cP(0)), P3::Construct(f.cP(1)), P3::Construct(f.cP(2))};
