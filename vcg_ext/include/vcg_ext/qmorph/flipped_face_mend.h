@@ -155,6 +155,7 @@ public:
             st.mended += mendedNow;
             if (mendedNow == 0) break;
         }
+        st.mended += UntangleStars(pg, m, surface, creaseAngleDeg, position, bad, jacobian);
         std::vector<int> leftTriangles;
         st.left = 0;
         const std::vector<int> polygonOf = OutputPolygons::PolygonOfFace(m);  // per face of m: its polygon
@@ -451,6 +452,61 @@ private:
     {
         f.ClearFaceEdgeS(e);
         f.ClearF(e);
+    }
+
+    // What no single mending move undoes (a cluster of small faces over a crumpled patch of the
+    // input, its triangles facing both ways within the faces' chord error: diplodocus, kept aside):
+    // a free corner of a bad face moved wherever the number of bad faces around it falls (the
+    // fewest, then the best worst quad), so that two bad neighbours can be mended one after the
+    // other. Every move lowers the number of bad faces: it ends. Returns the faces mended.
+    template <class Position, class Bad, class Jacobian>
+    static int UntangleStars(const OutputPolygons &pg, MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg,
+                             Position position, Bad bad, Jacobian jacobian)
+    {
+        int mended = 0;
+        auto score = [&](int v) {  // (bad faces around v, their worst Jacobian)
+            std::pair<int, double> s{0, 1.0};
+            for (int g : pg.facesOf[v]) {
+                s.first += bad(g);
+                s.second = std::min(s.second, jacobian(g));
+            }
+            return s;
+        };
+        for (int round = 0; round < kRounds; ++round) {
+            int mendedNow = 0;
+            for (int face = 0; face < pg.FaceCount(); ++face) {
+                if (!bad(face)) continue;
+                const P3 faceDirection = pg.VectorArea(face, position);
+                for (int v : pg.CornersByIndex(face)) {
+                    if (pg.fixed[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
+                    const CoordType old = m.vert[v].cP();
+                    const std::pair<int, double> before = score(v);
+                    std::pair<int, double> best = before;
+                    CoordType bestPlace = old;
+                    auto tryPlace = [&](const CoordType &place) {
+                        m.vert[v].P() = place;
+                        const std::pair<int, double> s = score(v);
+                        if (s.first < best.first || (s.first == best.first && s.first < before.first && s.second > best.second)) {
+                            best = s;
+                            bestPlace = place;
+                        }
+                    };
+                    const P3 centroid = pg.NeighbourCentroid(v, position);
+                    CoordType onSurface;
+                    for (const P3 &place : Places(pg, v, position, centroid)) {
+                        if (surface.Closest(CoordType::Construct(place), onSurface)) tryPlace(onSurface);
+                        if (faceDirection.Norm() > 0 && surface.ClosestFacing(CoordType::Construct(place), faceDirection, onSurface))
+                            tryPlace(onSurface);
+                    }
+                    m.vert[v].P() = bestPlace;
+                    mendedNow += before.first - best.first;
+                    if (!bad(face)) break;
+                }
+            }
+            mended += mendedNow;
+            if (mendedNow == 0) break;
+        }
+        return mended;
     }
 
     // Where a free corner v is tried on the sheet its face faces: its neighbours' centroid, where
