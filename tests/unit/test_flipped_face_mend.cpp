@@ -481,3 +481,37 @@ TEST(FlippedFaceMend, ASliverIsRemovedAtALargerNeedleHeight)
         EXPECT_EQ(FacesTurnedOver(grid.m), 0);
     }
 }
+
+// The four free corners of a cell of a grid of quads dragged up and right by about one cell: a
+// tangle of quads turned over or folded in which no single move turns one back without turning
+// another over (the moves that mend one face alone leave all three). The corners are moved one
+// after the other wherever the number of faces turned over around them falls, until none is left;
+// every corner stays on the input plane and every quad convex.
+TEST(FlippedFaceMend, ATangleOfQuadsIsUndoneCornerByCorner)
+{
+    TMesh input, m;
+    MakeGrid(input, 6, 6.f, 0.f, 1, false);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, input);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    for (TFace &f : m.face)  // the cell diagonals are faux: unit quads
+        for (int k = 0; k < 3; ++k)
+            if (f.P0(k)[0] != f.P1(k)[0] && f.P0(k)[1] != f.P1(k)[1]) f.SetF(k);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    TVertex *a = At(m, 2, 2), *b = At(m, 3, 2), *c = At(m, 3, 3), *d = At(m, 2, 3);
+    a->P() = P3(2.92978811f, 2.211514f, 0);
+    b->P() = P3(4.09058952f, 2.95451307f, 0);
+    c->P() = P3(4.08546734f, 3.9396739f, 0);
+    d->P() = P3(2.29157352f, 3.75800991f, 0);
+    ASSERT_EQ(FacesTurnedOver(m), 3);  // triangles: halves of quads turned over or folded
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(FacesTurnedOver(m), 0);
+    EXPECT_EQ(st.left, 0);
+    for (const TVertex &v : m.vert) EXPECT_EQ(v.cP()[2], 0.f) << "a vertex left the input plane";
+    const vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
+    for (const std::vector<int> &f : pm.faces) {
+        ASSERT_EQ(f.size(), 4u);
+        const D3 q[4] = {pm.points[f[0]], pm.points[f[1]], pm.points[f[2]], pm.points[f[3]]};
+        EXPECT_GT(vcg_ext::ScaledJacobian(q, D3(0, 0, 1)), 0) << "a quad left concave or turned";
+    }
+}
