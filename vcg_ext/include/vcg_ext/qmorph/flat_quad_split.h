@@ -65,7 +65,7 @@ public:
             const int c = FlatCorner(q);
             if (c < 0) continue;
             const int v = pg.corners[face][c];
-            if (!(pg.fixed[v] || surface.OnCrease(position(v), creaseAngleDeg))) continue;
+            if (!pg.NeverMoves(v, position(v), surface, creaseAngleDeg)) continue;
             const P3 t0[3] = {q[c], q[(c + 1) % 4], q[(c + 2) % 4]}, t1[3] = {q[c], q[(c + 2) % 4], q[(c + 3) % 4]};
             if (MinAngle(t0) < kMinTriangleAngle || MinAngle(t1) < kMinTriangleAngle) continue;
             if (!OutputPolygons::FacesInput(t0, 3, surface) || !OutputPolygons::FacesInput(t1, 3, surface)) continue;

@@ -115,7 +115,7 @@ public:
                 const P3 faceDirection = pg.VectorArea(face, position);
                 for (int v : pg.CornersByIndex(face)) {  // in index order: the same moves on a flipped copy
                     if (done) break;
-                    if (pg.fixed[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
+                    if (pg.NeverMoves(v, position(v), surface, creaseAngleDeg)) continue;
                     // the face mended, and no face around v made worse: none turned over, no quad
                     // folded or made concave (one already bad no worse than before)
                     facedBefore.clear();
@@ -478,7 +478,7 @@ private:
                 if (!bad(face)) continue;
                 const P3 faceDirection = pg.VectorArea(face, position);
                 for (int v : pg.CornersByIndex(face)) {
-                    if (pg.fixed[v] || surface.OnCrease(position(v), creaseAngleDeg)) continue;
+                    if (pg.NeverMoves(v, position(v), surface, creaseAngleDeg)) continue;
                     const CoordType old = m.vert[v].cP();
                     const std::pair<int, double> before = score(v);
                     std::pair<int, double> best = before;

@@ -156,6 +156,14 @@ struct OutputPolygons {
         return c / double(n);
     }
 
+    // Whether corner v, at p, never moves: on the front, on a border or on a sharp crease of the
+    // input (the passes on the output keep the features where they are).
+    template <class Surface>
+    bool NeverMoves(int v, const P3 &p, Surface &surface, double creaseAngleDeg) const
+    {
+        return fixed[v] || surface.OnCrease(p, creaseAngleDeg);
+    }
+
     // The corners of `face` in vertex index order.
     std::vector<int> CornersByIndex(int face) const
     {

@@ -51,7 +51,7 @@ public:
         auto facesInput = [&](int face) { return pg.FacesInput(face, position, surface); };
         std::vector<signed char> free(m.vert.size(), -1);  // -1: not known yet
         auto isFree = [&](int v) {
-            if (free[v] < 0) free[v] = !pg.fixed[v] && !surface.OnCrease(position(v), creaseAngleDeg);
+            if (free[v] < 0) free[v] = !pg.NeverMoves(v, position(v), surface, creaseAngleDeg);
             return free[v] == 1;
         };
         std::vector<double> quality(pg.FaceCount());  // kept up to date as corners move
