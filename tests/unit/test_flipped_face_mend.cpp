@@ -482,11 +482,11 @@ TEST(FlippedFaceMend, ASliverIsRemovedAtALargerNeedleHeight)
     }
 }
 
-// The four free corners of a cell of a grid of quads dragged up and right by about one cell: a
-// tangle of quads turned over or folded in which no single move turns one back without turning
-// another over (the moves that mend one face alone leave all three). The corners are moved one
-// after the other wherever the number of faces turned over around them falls, until none is left;
-// every corner stays on the input plane and every quad convex.
+// The four free corners of a cell of a grid of quads dragged right and up by up to about one cell:
+// a tangle (three triangles, halves of quads, turned over) in which no single move turns a face
+// back without turning another over: without the untangling, all three stay turned over. The
+// corners are moved one after the other wherever the number of bad faces around them falls, until
+// none is left; every corner stays on the input plane and every quad convex.
 TEST(FlippedFaceMend, ATangleOfQuadsIsUndoneCornerByCorner)
 {
     TMesh input, m;

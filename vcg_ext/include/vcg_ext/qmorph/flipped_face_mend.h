@@ -104,10 +104,15 @@ public:
         Stats st;
         std::vector<char> facedBefore;
         std::vector<double> jacobianBefore;
+        bool mayBeBad = true;  // false once a round found every face good (most runs)
         for (int round = 0; round < kRounds; ++round) {
             std::vector<int> badFaces;
             for (int face = 0; face < pg.FaceCount(); ++face)
                 if (bad(face)) badFaces.push_back(face);
+            if (badFaces.empty()) {
+                mayBeBad = false;
+                break;
+            }
             int mendedNow = 0;
             for (int face : badFaces) {
                 if (!bad(face)) { ++mendedNow; continue; }  // a neighbour's move mended it
@@ -155,7 +160,7 @@ public:
             st.mended += mendedNow;
             if (mendedNow == 0) break;
         }
-        st.mended += UntangleStars(pg, m, surface, creaseAngleDeg, position, bad, jacobian);
+        if (mayBeBad) st.mended += UntangleStars(pg, m, surface, creaseAngleDeg, position, bad, jacobian);
         std::vector<int> leftTriangles;
         st.left = 0;
         const std::vector<int> polygonOf = OutputPolygons::PolygonOfFace(m);  // per face of m: its polygon
@@ -454,9 +459,9 @@ private:
         f.ClearF(e);
     }
 
-    // What no single mending move undoes (a cluster of small faces over a crumpled patch of the
-    // input, its triangles facing both ways within the faces' chord error: diplodocus, kept aside):
-    // a free corner of a bad face moved wherever the number of bad faces around it falls (the
+    // What no single mending move undoes (a tangle: bad faces sharing corners, where a move that
+    // mends one turns another; the all-quads split's children on bones and man, kept aside): a
+    // free corner of a bad face moved wherever the number of bad faces around it falls (the
     // fewest, then the best worst quad), so that two bad neighbours can be mended one after the
     // other. Every move lowers the number of bad faces: it ends. Returns the faces mended.
     template <class Position, class Bad, class Jacobian>
