@@ -92,10 +92,13 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
     if (p.mode == VSA::FixedRegionCount && r.regions != p.maxRegions)
         Log("VSA: %d regions instead of %d (the mesh has %d faces and %d connected components)", r.regions,
             p.maxRegions, mm.cm.fn, r.components);
+    const QString onClusters =
+        r.clusters > 0 ? QString(" (seeded first on %1 face clusters, %2 Lloyd iterations on them)").arg(r.clusters).arg(r.clusterIterations)
+                       : QString();
     Log("VSA: %d regions on %d faces (%d components), L2,1 error %.6g, max normal deviation %.1f deg, "
-        "%d Lloyd iterations in %d seeding rounds, %.3f s",
+        "%d Lloyd iterations in %d seeding rounds%s, %.3f s",
         r.regions, mm.cm.fn, r.components, r.l21Error, r.maxDeviationDeg, r.lloydIterations, r.seedingRounds,
-        r.seconds);
+        qUtf8Printable(onClusters), r.seconds);
     if (p.mode == VSA::ThresholdSeeding)
         Log("VSA: region cap %d (%s)%s", r.regionCap, p.maxRegions > 0 ? "Max regions" : "automatic",
             r.regions >= r.regionCap && r.maxDeviationDeg > p.thresholdAngleDeg

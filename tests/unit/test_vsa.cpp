@@ -4,6 +4,7 @@
 #include <set>
 
 #include "test_mesh.h"
+#include <vcg_ext/common/face_clusters.h>
 #include <vcg_ext/vsa_segmentation.h>
 
 using namespace qmf_test;
@@ -368,4 +369,92 @@ TEST(VSA, AutomaticRegionCapGrowsWithTheMeshSoTheThresholdHolds)
     }
     for (int id = 0; id < r.regions; ++id)
         EXPECT_GT(r.proxyNormal[id] * (sum[id] / sum[id].Norm()), 1 - 1e-9) << "region " << id << "'s proxy is stale";
+}
+
+// The coarse level of big meshes: every face in exactly one cluster, each cluster edge-connected,
+// at most the size asked, within its cone (so none spans two sides of a cube), and the cluster
+// adjacency symmetric and exactly the clusters' shared edges.
+TEST(FaceClusters, ClustersAreConnectedConesOfBoundedSizeWithSymmetricAdjacency)
+{
+    TMesh m;
+    MakeCube(m, 12);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    const int n = int(m.face.size());
+    std::vector<std::array<int, 3>> adj(n);
+    std::vector<D3> normal(n);
+    for (int f = 0; f < n; ++f) {
+        normal[f] = UnitNormal(m.face[f]);
+        for (int k = 0; k < 3; ++k) adj[f][k] = int(vcg::tri::Index(m, m.face[f].FFp(k)));
+    }
+    const int maxFaces = 10;
+    const vcg_ext::FaceClusters c = vcg_ext::FaceClusters::Grow(adj, normal, std::vector<char>(n, 1), maxFaces, 15.0);
+    ASSERT_EQ(int(c.faces.size()), n);
+    EXPECT_GE(c.Count(), (n + maxFaces - 1) / maxFaces);
+    std::vector<int> times(n, 0);
+    for (int id = 0; id < c.Count(); ++id) {
+        const int size = c.faceStart[id + 1] - c.faceStart[id];
+        ASSERT_GE(size, 1);
+        EXPECT_LE(size, maxFaces);
+        const int first = c.faces[c.faceStart[id]];
+        std::set<int> members, reached{first};
+        for (int i = c.faceStart[id]; i < c.faceStart[id + 1]; ++i) {
+            const int f = c.faces[i];
+            ++times[f];
+            members.insert(f);
+            EXPECT_EQ(c.clusterOf[f], id);
+            EXPECT_GT(normal[f] * normal[first], 0.999) << "a cluster spans two sides of the cube";
+        }
+        std::vector<int> stack{first};
+        while (!stack.empty()) {
+            const int f = stack.back();
+            stack.pop_back();
+            for (int g : adj[f])
+                if (members.count(g) && reached.insert(g).second) stack.push_back(g);
+        }
+        EXPECT_EQ(reached.size(), members.size()) << "cluster " << id << " is not edge-connected";
+    }
+    for (int f = 0; f < n; ++f) ASSERT_EQ(times[f], 1);
+    std::set<std::pair<int, int>> listed, shared;
+    for (int id = 0; id < c.Count(); ++id)
+        for (int i = c.neighbourStart[id]; i < c.neighbourStart[id + 1]; ++i)
+            EXPECT_TRUE(listed.insert({id, c.neighbours[i]}).second) << "a neighbour listed twice";
+    for (int f = 0; f < n; ++f)
+        for (int g : adj[f])
+            if (c.clusterOf[g] != c.clusterOf[f]) shared.insert({c.clusterOf[f], c.clusterOf[g]});
+    EXPECT_EQ(listed, shared);
+}
+
+// Threshold seeding that starts on face clusters (the default from 131,072 faces; forced here on
+// armadillo's 52k faces) meets the threshold angle on the faces, gives a valid partition, does
+// most of its Lloyd iterations on the clusters and ends with about the regions and the L2,1 error
+// of seeding on faces alone. Below the automatic size the seeding stays on faces.
+TEST(VSA, BigMeshesAreSeededOnFaceClustersWithinTheAngle)
+{
+    TMesh onFaces, onClusters;
+    ASSERT_TRUE(LoadOff(onFaces, MeshDir() + "/armadillo.off")) << "run scripts/setup.sh to extract the test meshes";
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(onClusters, onFaces);
+    ASSERT_LT(onFaces.fn, VSA::kClusterCount * VSA::kMinClusterFaces);
+    EXPECT_EQ(VSA::AutomaticClusterSize(VSA::kClusterCount * VSA::kMinClusterFaces - 1), 1);
+    EXPECT_EQ(VSA::AutomaticClusterSize(VSA::kClusterCount * VSA::kMinClusterFaces), VSA::kMinClusterFaces);
+
+    const VSA::Params defaults;
+    const VSA::Result r0 = VSA::Segment(onFaces, defaults);
+    ASSERT_EQ(r0.error, "");
+    EXPECT_EQ(r0.clusters, 0) << "a mesh under the automatic size is seeded on faces";
+    EXPECT_EQ(r0.clusterIterations, 0);
+
+    VSA::Params p;
+    p.facesPerCluster = 8;
+    const VSA::Result r = VSA::Segment(onClusters, p);
+    ASSERT_EQ(r.error, "");
+    ExpectValidPartition(onClusters, r);
+    EXPECT_GE(r.clusters, onClusters.fn / p.facesPerCluster);
+    EXPECT_LT(r.clusters, onClusters.fn / 2);
+    EXPECT_LE(r.maxDeviationDeg, defaults.thresholdAngleDeg + 1e-6);
+    EXPECT_LE(MaxRegionDeviation(onClusters, r.faceRegion, r.regions), defaults.thresholdAngleDeg + 1e-6);
+    EXPECT_GT(r.clusterIterations, r.lloydIterations) << "most iterations on the clusters";
+    EXPECT_LT(r.lloydIterations, r0.lloydIterations / 2) << "r0: " << r0.lloydIterations;
+    EXPECT_NEAR(r.regions, r0.regions, 0.15 * r0.regions);
+    EXPECT_NEAR(r.l21Error, r0.l21Error, 0.05 * r0.l21Error);
+    EXPECT_NEAR(r.l21Error, VSA::L21Error(onClusters, r.faceRegion, r.proxyNormal), 1e-9 * r.l21Error);
 }
