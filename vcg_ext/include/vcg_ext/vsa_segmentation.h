@@ -113,8 +113,9 @@ public:
     // refined to 832k faces, each a priority-queue flooding of every face), then flood about
     // kClusterCount clusters instead, and the rounds on faces only move the boundaries and split
     // where the clusters' boundaries left a face beyond the angle (VSA on that mesh: 15.9 s ->
-    // 4.2 s, 464 -> 489 regions, L2,1 error 3% lower; refined to 3.3M faces: 108 s -> 12 s). A cluster's error against a proxy is exact (2A - 2 S.N, see Teleport), so
-    // the clusters change where the regions start, not what is minimised. Under kMinClusterFaces
+    // 4.2 s, 464 -> 489 regions, L2,1 error 3% lower; refined to 3.3M faces: 108 s -> 18 s). A
+    // cluster's error against a proxy is exact (2A - 2 S.N, see Teleport), so the clusters change
+    // where the regions start, not what is minimised. Under kMinClusterFaces
     // faces per cluster (meshes under 131,072 faces) the faces alone are about as fast (armadillo,
     // 52k faces: 0.80 s on faces, 0.72 s from clusters of 3) and seeding stays on them.
     static int AutomaticClusterSize(int faces) { return faces / kClusterCount >= kMinClusterFaces ? faces / kClusterCount : 1; }
@@ -429,8 +430,9 @@ private:
         return std::max(0.0, 2 * clusterArea[c] - 2 * (clusterNormalSum[c] * proxy[region]));
     }
 
-    // Partition's flooding over the clusters' graph from the seeds' clusters; every face takes its
-    // cluster's region. A seed whose cluster a region of lower index holds floods nothing.
+    // Partition's flooding over the clusters' graph from the seeds' clusters (the faces take their
+    // cluster's region at the end of the Lloyd run: LabelFacesFromClusters). A seed whose cluster
+    // a region of lower index holds floods nothing.
     void PartitionClusters()
     {
         const int k = clusters.Count();
