@@ -188,6 +188,12 @@ private:
         {                                         // (a total order: the push order never matters)
             return error != o.error ? error > o.error : face != o.face ? face > o.face : region > o.region;
         }
+        // For the same element: whether this entry would pop before `queued`, the element's best so
+        // far (only such an entry is worth queueing; the larger one would pop later and be skipped).
+        bool PopsBefore(const QueueItem &queued) const
+        {
+            return error < queued.error || (error == queued.error && region < queued.region);
+        }
     };
 
     MeshType &m;
@@ -319,7 +325,7 @@ private:
         std::priority_queue<QueueItem> q;
         auto push = [&](int g, int r) {
             const QueueItem it{Error(g, r), g, r};
-            if (it.error < queued[g].error || (it.error == queued[g].error && r < queued[g].region)) {
+            if (it.PopsBefore(queued[g])) {
                 queued[g] = it;
                 q.push(it);
             }
@@ -340,18 +346,22 @@ private:
         }
     }
 
-    // Proxy normal = normalised area-weighted normal sum; a zero sum keeps the seed's normal.
+    // Proxy normals of the scope's regions from their faces (SetProxy).
     void FitProxies(const Scope &scope)
     {
         std::vector<Vec> sum(seeds.size(), Vec(0, 0, 0));
         for (int f : scope.faces)
             if (label[f] >= 0) sum[label[f]] += normal[f] * area[f];
-        for (size_t r = 0; r < seeds.size(); ++r) {
-            if (!scope.Has(int(r))) continue;
-            double len = sum[r].Norm();
-            if (len > 0) proxy[r] = sum[r] / len;
-            else if (normal[seeds[r]].SquaredNorm() > 0) proxy[r] = normal[seeds[r]];
-        }
+        for (size_t r = 0; r < seeds.size(); ++r)
+            if (scope.Has(int(r))) SetProxy(int(r), sum[r]);
+    }
+
+    // Proxy normal of region r from its area-weighted normal sum; a zero sum keeps the seed's normal.
+    void SetProxy(int r, const Vec &sum)
+    {
+        const double len = sum.Norm();
+        if (len > 0) proxy[r] = sum / len;
+        else if (normal[seeds[r]].SquaredNorm() > 0) proxy[r] = normal[seeds[r]];
     }
 
     double TotalError(const Scope &scope) const
@@ -443,7 +453,7 @@ private:
             // error per area: by the error alone, clusters of many faces would join last
             // whatever their fit (three times the regions on the 832k mesh)
             const QueueItem it{clusterArea[c] > 0 ? ClusterError(c, r) / clusterArea[c] : 0.0, c, r};
-            if (it.error < best[c].error || (it.error == best[c].error && r < best[c].region)) {
+            if (it.PopsBefore(best[c])) {
                 best[c] = it;
                 q.push(it);
             }
@@ -477,11 +487,7 @@ private:
         std::vector<Vec> sum(seeds.size(), Vec(0, 0, 0));
         for (int c = 0; c < clusters.Count(); ++c)
             if (clusterLabel[c] >= 0) sum[clusterLabel[c]] += clusterNormalSum[c];
-        for (size_t r = 0; r < seeds.size(); ++r) {
-            double len = sum[r].Norm();
-            if (len > 0) proxy[r] = sum[r] / len;
-            else if (normal[seeds[r]].SquaredNorm() > 0) proxy[r] = normal[seeds[r]];
-        }
+        for (size_t r = 0; r < seeds.size(); ++r) SetProxy(int(r), sum[r]);
     }
 
     double TotalErrorOnClusters() const
@@ -537,10 +543,13 @@ private:
             if (label[f] >= 0) label[f] = newIndex[label[f]];
     }
 
+    // A new region's proxy: its seed's normal (any unit vector for a zero-area seed).
+    Vec SeedNormal(int face) const { return normal[face].SquaredNorm() > 0 ? normal[face] : Vec(0, 0, 1); }
+
     void AddSeed(int face)
     {
         seeds.push_back(face);
-        proxy.push_back(normal[face].SquaredNorm() > 0 ? normal[face] : Vec(0, 0, 1));
+        proxy.push_back(SeedNormal(face));
     }
 
     // Splits regions: each (region, face) pair adds a seed at `face` (a face of `region`) and
@@ -571,7 +580,7 @@ private:
             if (far[i] >= 0 && far[i] != face) { seeds[r] = far[i]; proxy[r] = normal[far[i]]; }
             if (i < reuse.size() && reuse[i] >= 0) {
                 seeds[reuse[i]] = face;
-                proxy[reuse[i]] = normal[face].SquaredNorm() > 0 ? normal[face] : Vec(0, 0, 1);
+                proxy[reuse[i]] = SeedNormal(face);
             } else {
                 AddSeed(face);
                 ++added;
