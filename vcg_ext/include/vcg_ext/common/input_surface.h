@@ -59,6 +59,8 @@ public:
         reversed = canon.reversed;
         vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(mesh);
         vcg::tri::UpdateBounding<MeshType>::Box(mesh);
+        planes.reserve(mesh.face.size());
+        for (const FaceType &f : mesh.face) planes.push_back(PointFaceDistance<FaceType>::PlaneOf(f));
         if (cb) cb(percent, "Q-Morph: the input surface, grid");
         grid.Set(mesh.face.begin(), mesh.face.end(), int(kCellsPerFace * mesh.face.size()));
         if (cb) cb(percent, "Q-Morph: the input surface, sharp creases");
@@ -95,7 +97,7 @@ public:
     // `closest`), or null.
     const FaceType *ClosestWithin(const CoordType &p, double maxDistance, CoordType &closest)
     {
-        PointFaceDistance<FaceType> distance;
+        CachedDistance distance{this};
         vcg::tri::EmptyTMark<MeshType> noMarks;
         ScalarType dist = ScalarType(maxDistance);
         return grid.GetClosest(distance, noMarks, p, ScalarType(maxDistance), dist, closest);
@@ -199,7 +201,7 @@ public:
         std::vector<FaceType *> around;
         std::vector<ScalarType> distances;
         std::vector<CoordType> points;
-        PointFaceDistance<FaceType> distance;
+        CachedDistance distance{this};
         vcg::tri::EmptyTMark<MeshType> noMarks;
         grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
@@ -214,6 +216,7 @@ private:
     static constexpr double kOnCreaseDiagonal = 1e-5;
 
     std::vector<char> besideSharpCrease;  // per input triangle
+    std::vector<typename PointFaceDistance<FaceType>::Plane> planes;  // per input triangle: see CachedDistance
     std::vector<char> reversed;           // per input triangle: read the other way round than the input's
     bool canonical = false;               // see UseCanonicalOrientation
 
@@ -227,6 +230,20 @@ private:
     // A search near a known surface goes a little beyond it (float rounding of the copy).
     static constexpr double kNearSearchSlack = 1.01;
 
+    const typename PointFaceDistance<FaceType>::Plane &PlaneOf(const FaceType &f) const { return planes[&f - &mesh.face[0]]; }
+
+    // The exact point-triangle distance (PointFaceDistance's answers) with each triangle's plane
+    // read from `planes`: a search tests about 30 triangles, most rejected by their plane alone.
+    struct CachedDistance {
+        typedef CoordType QueryType;
+        const InputSurface *surface;
+        static const CoordType &Pos(const CoordType &q) { return q; }
+        bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &q) const
+        {
+            return PointFaceDistance<FaceType>::Nearer(f, surface->PlaneOf(f), p, minDist, q);
+        }
+    };
+
     // The exact point-triangle distance, for the triangles facing `direction` only.
     struct FacingDistance {
         typedef CoordType QueryType;
@@ -236,7 +253,7 @@ private:
         bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &q) const
         {
             if (!(P3::Construct(surface->Normal(&f)) * direction > 0)) return false;
-            return PointFaceDistance<FaceType>()(f, p, minDist, q);
+            return PointFaceDistance<FaceType>::Nearer(f, surface->PlaneOf(f), p, minDist, q);
         }
     };
 
@@ -247,7 +264,7 @@ private:
         std::vector<FaceType *> around;
         std::vector<ScalarType> distances;
         std::vector<CoordType> points;
-        PointFaceDistance<FaceType> distance;
+        CachedDistance distance{this};
         vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
         grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
         return around;
