@@ -198,12 +198,7 @@ public:
         const CoordType q = CoordType::Construct(p);
         if (!Closest(q, closest)) return false;
         const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kOnCreaseDiagonal * mesh.bbox.Diag());
-        std::vector<FaceType *> around;
-        std::vector<ScalarType> distances;
-        std::vector<CoordType> points;
-        CachedDistance distance{this};
-        vcg::tri::EmptyTMark<MeshType> noMarks;
-        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        const std::vector<FaceType *> around = Within(q, radius);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
         for (size_t i = 0; i < around.size(); ++i)
             for (size_t j = i + 1; j < around.size(); ++j)
@@ -260,13 +255,32 @@ private:
     // The triangles as close to q as the closest one (at `closest`), up to the tie slack.
     std::vector<FaceType *> TiedWithClosest(const CoordType &q, const CoordType &closest)
     {
-        const ScalarType radius = ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag());
+        return Within(q, ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag()));
+    }
+
+    // The input triangles nearer q than radius: those vcglib's GetInSphere finds (every triangle
+    // of the grid cells the sphere's box touches, tested exactly), without its growing shells,
+    // sorting and copies. A triangle in several cells comes once per cell: callers ask whether
+    // any or every one of them does something.
+    std::vector<FaceType *> Within(const CoordType &q, ScalarType radius)
+    {
         std::vector<FaceType *> around;
-        std::vector<ScalarType> distances;
-        std::vector<CoordType> points;
-        CachedDistance distance{this};
-        vcg::tri::EmptyTMark<MeshType> noMarks;  // a triangle may come twice: harmless here
-        grid.GetInSphere(distance, noMarks, q, radius, around, distances, points);
+        vcg::Box3i cells;
+        grid.BoxToIBox(vcg::Box3<ScalarType>(q, radius), cells);
+        cells.Intersect(vcg::Box3i(vcg::Point3i(0, 0, 0), grid.siz - vcg::Point3i(1, 1, 1)));
+        if (cells.IsNull()) return around;
+        const CachedDistance distance{this};
+        typename Grid::CellIterator first, last;
+        CoordType point;
+        for (int z = cells.min[2]; z <= cells.max[2]; ++z)
+            for (int y = cells.min[1]; y <= cells.max[1]; ++y)
+                for (int x = cells.min[0]; x <= cells.max[0]; ++x) {
+                    grid.Grid(x, y, z, first, last);
+                    for (typename Grid::CellIterator l = first; l != last; ++l) {
+                        ScalarType d = radius;
+                        if (distance(**l, q, d, point)) around.push_back(&**l);
+                    }
+                }
         return around;
     }
 
