@@ -120,3 +120,56 @@ TEST(InputSurface, ClosestTriangleOfAnObtuseNeighbourhoodIsTheNearest)
     EXPECT_EQ(vcg::tri::Index(input.mesh, f), 0u);
     EXPECT_GT(input.NormalUnder(D3(2, 3, 1), D3(0, 0, -1))[2], 0.99);
 }
+
+// The grid's answers against every triangle tested one by one, on a scan with thin fins and sharp
+// creases (CGAL's man, extracted by set-up): the closest triangle's distance is the least of all,
+// and whether a direction faces every closest triangle (those within the tie slack of the closest,
+// on its side of a crease) is what the whole list says. Points near face centres, and just above
+// vertices, where the closest point is a corner that several triangles share (ties).
+TEST(InputSurface, SearchesAgreeWithEveryTriangleTestedOnAScan)
+{
+    TMesh m;
+    ASSERT_TRUE(LoadOff(m, MeshDir() + "/man.off"));
+    vcg_ext::InputSurface<TMesh> input(m);
+    const TMesh &s = input.mesh;
+    const double diagonal = s.bbox.Diag();
+    std::vector<D3> points;
+    for (size_t f = 0; f < s.face.size(); f += 97) {
+        const D3 a = D3::Construct(s.face[f].cP(0)), b = D3::Construct(s.face[f].cP(1)), c = D3::Construct(s.face[f].cP(2));
+        const D3 n = D3::Construct(s.face[f].cN());
+        const double edge = (b - a).Norm();
+        points.push_back((a + b + c) / 3.0 + n * (0.3 * edge) + (b - a) * 0.2);
+        points.push_back(a + n * (1e-3 * edge));
+    }
+    const D3 directions[3] = {D3(0, 0, 1), D3(0.6, -0.8, 0), D3(-0.48, 0.6, 0.64)};
+    int ties = 0;
+    for (const D3 &p : points) {
+        const P3 q = P3::Construct(p);
+        P3 closest;
+        const TFace *near = input.Closest(q, closest);
+        ASSERT_NE(near, nullptr);
+        double least = 1e300;
+        for (const TFace &f : s.face) {
+            float d = float(diagonal);
+            P3 at;
+            if (vcg_ext::PointFaceDistance<TFace>()(f, q, d, at)) least = std::min(least, double(d));
+        }
+        EXPECT_NEAR(vcg::Distance(q, closest), least, 1e-6 * diagonal);
+        // the triangles tied with the closest, as the input surface defines them
+        const float radius = float(vcg::Distance(q, closest) + vcg_ext::InputSurface<TMesh>::kTieDiagonal * diagonal);
+        std::vector<const TFace *> tied;
+        for (const TFace &f : s.face) {
+            float d = radius;
+            P3 at;
+            if (vcg_ext::PointFaceDistance<TFace>()(f, q, d, at)) tied.push_back(&f);
+        }
+        ties += tied.size() > 1;
+        for (const D3 &direction : directions) {
+            bool every = D3::Construct(input.Normal(near)) * direction > 0;
+            for (const TFace *f : tied)
+                if (f->cN() * near->cN() >= 0 && !(D3::Construct(input.Normal(f)) * direction > 0)) every = false;
+            EXPECT_EQ(input.FacesEveryClosest(p, direction), every);
+        }
+    }
+    EXPECT_GT(ties, int(points.size()) / 4);  // the points above vertices have several closest triangles
+}

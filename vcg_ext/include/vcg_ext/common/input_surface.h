@@ -73,6 +73,11 @@ public:
             if (twin[h] >= 0 && mesh.face[h / 3].cN() * mesh.face[twin[h] / 3].cN() < 0) besideSharpCrease[h / 3] = 1;
     }
 
+    // Next to a crease sharper than 90 degrees, the closest triangle decides unless a triangle
+    // facing the other way is as close, up to kTieDiagonal of the diagonal (a point on the crease
+    // itself): a face is judged by the side its centroid is nearest, as evalquad judges it.
+    static constexpr double kTieDiagonal = 1e-7;
+
     // Normals in the canonical orientation (on) or the input's (off, the default).
     void UseCanonicalOrientation(bool on) { canonical = on; }
 
@@ -215,10 +220,6 @@ private:
     std::vector<char> reversed;           // per input triangle: read the other way round than the input's
     bool canonical = false;               // see UseCanonicalOrientation
 
-    // Next to a crease sharper than 90 degrees, the closest triangle decides unless a triangle
-    // facing the other way is as close, up to kTieDiagonal of the diagonal (a point on the crease
-    // itself): a face is judged by the side its centroid is nearest, as evalquad judges it.
-    static constexpr double kTieDiagonal = 1e-7;
     // Grid cells per triangle: a surface fills few cells of its box, so vcglib's default (one per
     // triangle) leaves dozens of triangles in each cell a query near the surface must test.
     static constexpr double kCellsPerFace = 8;
