@@ -54,7 +54,6 @@ STAGES=(
 
 WORK="$(mktemp -d)"
 trap 'rm -rf "$WORK"' EXIT
-declare -a TOTALS
 i=0
 for b in "${BINARIES[@]}"; do
   echo "bench_instructions: $b on $MESH ..." >&2
@@ -88,7 +87,7 @@ echo "$header"
 echo "$rule"
 row="| whole run |"
 for ((k = 0; k < ${#BINARIES[@]}; ++k)); do
-  total=$(grep -E "PROGRAM TOTALS" "$WORK/annotate.$k" | awk '{ gsub(",", "", $1); print $1 }')
+  total=$(count_of "$WORK/annotate.$k" "PROGRAM TOTALS")
   row="$row $(millions "${total:-0}") |"
 done
 echo "$row"
