@@ -48,7 +48,7 @@ STAGES=(
   "Q-Morph: re-meshing (calling thread)|qmorph::FeatureRemesh<[^>]*>::Do\("
   "Q-Morph: patches (all threads)|qmorph::PatchMesher::Run\("
   "  of which node moves rated|qmorph::PatchStage::WorstQualityIfMoved\("
-  "closest-point searches (vcglib grid walks)|vcg::GridClosest<"
+  "closest-point searches (input surface)|(TriangleGrid<[^>]*>::Closest<|vcg::GridClosest<[^>]*>, vcg_ext::InputSurface)"
   "evaluation (benchmark only)|qmf_test::OneSidedDistance\("
 )
 

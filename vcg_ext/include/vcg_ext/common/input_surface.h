@@ -19,16 +19,14 @@
 #include <vector>
 
 #include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/closest.h>
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
-#include <vcg/space/index/grid_static_ptr.h>
 #include <wrap/callback.h>
 
 #include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_pairing.h>
 #include <vcg_ext/common/face_corners.h>
-#include <vcg_ext/common/point_face_distance.h>
+#include <vcg_ext/common/triangle_grid.h>
 #include <vcg_ext/quad_quality.h>
 
 namespace vcg_ext {
@@ -40,11 +38,10 @@ public:
     typedef typename MeshType::FaceType FaceType;
     typedef typename MeshType::CoordType CoordType;
     typedef typename MeshType::ScalarType ScalarType;
-    typedef vcg::GridStaticPtr<FaceType, ScalarType> Grid;
     typedef vcg::Point3d P3;
 
     MeshType mesh;  // read canonically (normals too, as vcg's closest-point code needs); no adjacency
-    Grid grid;
+    TriangleGrid<MeshType> grid;  // of `mesh`
 
     // cb (optional): each step reported at `percent` (seconds each on millions of faces).
     explicit InputSurface(MeshType &m, vcg::CallBackPos *cb = nullptr, int percent = 0)
@@ -59,10 +56,8 @@ public:
         reversed = canon.reversed;
         vcg::tri::UpdateNormal<MeshType>::PerFaceNormalized(mesh);
         vcg::tri::UpdateBounding<MeshType>::Box(mesh);
-        planes.reserve(mesh.face.size());
-        for (const FaceType &f : mesh.face) planes.push_back(PointFaceDistance<FaceType>::PlaneOf(f));
         if (cb) cb(percent, "Q-Morph: the input surface, grid");
-        grid.Set(mesh.face.begin(), mesh.face.end(), int(kCellsPerFace * mesh.face.size()));
+        grid.Build(mesh, int(kCellsPerFace * mesh.face.size()));
         if (cb) cb(percent, "Q-Morph: the input surface, sharp creases");
         std::vector<EdgePairing::Triangle> tris;
         for (const FaceType &f : mesh.face)
@@ -102,10 +97,7 @@ public:
     // `closest`), or null.
     const FaceType *ClosestWithin(const CoordType &p, double maxDistance, CoordType &closest)
     {
-        CachedDistance distance{this};
-        vcg::tri::EmptyTMark<MeshType> noMarks;
-        ScalarType dist = ScalarType(maxDistance);
-        return grid.GetClosest(distance, noMarks, p, ScalarType(maxDistance), dist, closest);
+        return Search(p, maxDistance, [](int) { return true; }, closest);
     }
 
     // The input triangle closest to p among those facing `direction` (normal * direction > 0), or
@@ -113,10 +105,7 @@ public:
     // touching, two bones side by side), the closest point may be on the sheet behind.
     const FaceType *ClosestFacing(const CoordType &p, const P3 &direction, CoordType &closest)
     {
-        FacingDistance distance{this, direction};
-        vcg::tri::EmptyTMark<MeshType> noMarks;
-        ScalarType dist = mesh.bbox.Diag();
-        return grid.GetClosest(distance, noMarks, p, mesh.bbox.Diag(), dist, closest);
+        return Search(p, mesh.bbox.Diag(), [&](int f) { return P3::Construct(Normal(&mesh.face[f])) * direction > 0; }, closest);
     }
 
     // One closest-point search at a point, for the several questions a caller asks there (each
@@ -216,7 +205,6 @@ private:
     static constexpr double kOnCreaseDiagonal = 1e-5;
 
     std::vector<char> besideSharpCrease;  // per input triangle
-    std::vector<typename PointFaceDistance<FaceType>::Plane> planes;  // per input triangle: see CachedDistance
     std::vector<char> reversed;           // per input triangle: read the other way round than the input's
     bool canonical = false;               // see UseCanonicalOrientation
 
@@ -226,32 +214,14 @@ private:
     // A search near a known surface goes a little beyond it (float rounding of the copy).
     static constexpr double kNearSearchSlack = 1.01;
 
-    const typename PointFaceDistance<FaceType>::Plane &PlaneOf(const FaceType &f) const { return planes[&f - &mesh.face[0]]; }
-
-    // The exact point-triangle distance (PointFaceDistance's answers) with each triangle's plane
-    // read from `planes`: a search tests about 30 triangles, most rejected by their plane alone.
-    struct CachedDistance {
-        typedef CoordType QueryType;
-        const InputSurface *surface;
-        static const CoordType &Pos(const CoordType &q) { return q; }
-        bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &q) const
-        {
-            return PointFaceDistance<FaceType>::Nearer(f, surface->PlaneOf(f), p, minDist, q);
-        }
-    };
-
-    // The exact point-triangle distance, for the triangles facing `direction` only.
-    struct FacingDistance {
-        typedef CoordType QueryType;
-        const InputSurface *surface;
-        P3 direction;
-        static const CoordType &Pos(const CoordType &q) { return q; }
-        bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &q) const
-        {
-            if (!(P3::Construct(surface->Normal(&f)) * direction > 0)) return false;
-            return PointFaceDistance<FaceType>::Nearer(f, surface->PlaneOf(f), p, minDist, q);
-        }
-    };
+    // The input triangle nearest p, nearer than maxDistance, among those `accept` takes (its
+    // closest point in `closest`), or null (TriangleGrid::Closest: vcglib's GridClosest's answer).
+    template <class Accept>
+    const FaceType *Search(const CoordType &p, double maxDistance, const Accept &accept, CoordType &closest)
+    {
+        const int f = grid.Closest(p, ScalarType(maxDistance), accept, closest);
+        return f < 0 ? nullptr : &mesh.face[f];
+    }
 
     // The triangles as close to q as the closest one (at `closest`), up to the tie slack.
     std::vector<FaceType *> TiedWithClosest(const CoordType &q, const CoordType &closest)
@@ -259,29 +229,12 @@ private:
         return Within(q, ScalarType(vcg::Distance(q, closest) + kTieDiagonal * mesh.bbox.Diag()));
     }
 
-    // The input triangles nearer q than radius: those vcglib's GetInSphere finds (every triangle
-    // of the grid cells the sphere's box touches, tested exactly), without its growing shells,
-    // sorting and copies. A triangle in several cells comes once per cell: callers ask whether
-    // any or every one of them does something.
+    // The input triangles nearer q than radius (TriangleGrid::ForEachWithin). A triangle in several
+    // cells comes once per cell: callers ask whether any or every one of them does something.
     std::vector<FaceType *> Within(const CoordType &q, ScalarType radius)
     {
         std::vector<FaceType *> around;
-        vcg::Box3i cells;
-        grid.BoxToIBox(vcg::Box3<ScalarType>(q, radius), cells);
-        cells.Intersect(vcg::Box3i(vcg::Point3i(0, 0, 0), grid.siz - vcg::Point3i(1, 1, 1)));
-        if (cells.IsNull()) return around;
-        const CachedDistance distance{this};
-        typename Grid::CellIterator first, last;
-        CoordType point;
-        for (int z = cells.min[2]; z <= cells.max[2]; ++z)
-            for (int y = cells.min[1]; y <= cells.max[1]; ++y)
-                for (int x = cells.min[0]; x <= cells.max[0]; ++x) {
-                    grid.Grid(x, y, z, first, last);
-                    for (typename Grid::CellIterator l = first; l != last; ++l) {
-                        ScalarType d = radius;
-                        if (distance(**l, q, d, point)) around.push_back(&**l);
-                    }
-                }
+        grid.ForEachWithin(q, radius, [&](int f) { around.push_back(&mesh.face[f]); });
         return around;
     }
 

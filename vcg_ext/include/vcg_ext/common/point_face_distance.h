@@ -23,36 +23,25 @@ struct PointFaceDistance {
     typedef CoordType QueryType;
     static const CoordType &Pos(const CoordType &q) { return q; }
 
-    // What the test reads of a face before its exact distance: its first corner and its normal
-    // (b - a) x (c - a), unnormalised, with that normal's length, in double. Kept per face by a
-    // caller that tests the same faces again and again (InputSurface): the same numbers, so the
-    // same answers, without reading the other two corners of the many faces the plane rejects.
-    struct Plane {
-        Vec3d n;
-        double len;
-        CoordType a;
-    };
-    static Plane PlaneOf(const FaceType &f)
-    {
-        const Vec3d a = Vec3d::Construct(f.cP(0));
-        const Vec3d n = (Vec3d::Construct(f.cP(1)) - a) ^ (Vec3d::Construct(f.cP(2)) - a);
-        return {n, n.Norm(), f.cP(0)};
-    }
-
     // As vcglib's functors: true (with `minDist` and `closest` updated) when f is nearer than
     // minDist.
     bool operator()(const FaceType &f, const CoordType &p, ScalarType &minDist, CoordType &closest) const
     {
-        return Nearer(f, PlaneOf(f), p, minDist, closest);
+        const CoordType corners[3] = {f.cP(0), f.cP(1), f.cP(2)};
+        return Nearer(corners, p, minDist, closest);
     }
 
-    // The same with f's plane given. The distance to the plane bounds the distance from below: most
-    // faces stop there.
-    static bool Nearer(const FaceType &f, const Plane &plane, const CoordType &p, ScalarType &minDist, CoordType &closest)
+    // The same for the triangle of the three corners given (a caller keeping them itself:
+    // TriangleGrid). The distance to the plane bounds the distance from below: most triangles stop
+    // there.
+    static bool Nearer(const CoordType *corner, const CoordType &p, ScalarType &minDist, CoordType &closest)
     {
-        const Vec3d q = Vec3d::Construct(p), a = Vec3d::Construct(plane.a);
-        if (plane.len > 0 && std::abs((q - a) * plane.n) > double(minDist) * plane.len) return false;
-        const Vec3d at = ClosestPointOnTriangle(q, a, Vec3d::Construct(f.cP(1)), Vec3d::Construct(f.cP(2)));
+        const Vec3d q = Vec3d::Construct(p), a = Vec3d::Construct(corner[0]), b = Vec3d::Construct(corner[1]),
+                    c = Vec3d::Construct(corner[2]);
+        const Vec3d n = (b - a) ^ (c - a);
+        const double len = n.Norm();
+        if (len > 0 && std::abs((q - a) * n) > double(minDist) * len) return false;
+        const Vec3d at = ClosestPointOnTriangle(q, a, b, c);
         const double d = (at - q).Norm();
         if (!(d < double(minDist))) return false;
         minDist = ScalarType(d);
