@@ -78,7 +78,7 @@ public:
             if (winner >= 0) newRadius = minDist;
             done = vcg::Box3i(home, home);
         }
-        const vcg::Box3i all(vcg::Point3i(0, 0, 0), box.siz - vcg::Point3i(1, 1, 1));
+        const vcg::Box3i all = AllCells();
         do {
             radius = newRadius;
             vcg::Box3i todo;
@@ -105,7 +105,7 @@ public:
         if (entries.empty()) return;
         vcg::Box3i span;
         box.BoxToIBox(vcg::Box3<ScalarType>(q, radius), span);
-        span.Intersect(vcg::Box3i(vcg::Point3i(0, 0, 0), box.siz - vcg::Point3i(1, 1, 1)));
+        span.Intersect(AllCells());
         if (span.IsNull()) return;
         CoordType point;
         for (int z = span.min[2]; z <= span.max[2]; ++z)
@@ -119,8 +119,6 @@ public:
                 }
     }
 
-    size_t Entries() const { return entries.size(); }
-
 private:
     // A triangle as filed in a cell: its corners and its index in the mesh.
     struct Entry {
@@ -132,6 +130,7 @@ private:
     std::vector<int> start;          // per cell (and a sentinel): its first entry
     std::vector<Entry> entries;      // cell by cell, each cell's in GridStaticPtr's order
 
+    vcg::Box3i AllCells() const { return vcg::Box3i(vcg::Point3i(0, 0, 0), box.siz - vcg::Point3i(1, 1, 1)); }
     size_t CellIndex(int x, int y, int z) const { return size_t(x) + size_t(box.siz[0]) * (size_t(y) + size_t(box.siz[1]) * size_t(z)); }
 
     static bool Nearer(const Entry &e, const CoordType &p, ScalarType &minDist, CoordType &closest)
