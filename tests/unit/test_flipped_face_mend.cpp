@@ -515,3 +515,140 @@ TEST(FlippedFaceMend, ATangleOfQuadsIsUndoneCornerByCorner)
         EXPECT_GT(vcg_ext::ScaledJacobian(q, D3(0, 0, 1)), 0) << "a quad left concave or turned";
     }
 }
+
+namespace {
+// Polygons of m (faux-edge quads) turned away from an input triangle closest to their centroid, or
+// quads folded or not convex on the input's normal under them: what the last check mends.
+int BadPolygons(TMesh &m, vcg_ext::InputSurface<TMesh> &surface)
+{
+    const vcg_ext::PolygonMesh pm = vcg_ext::QuadQuality::FromFauxMesh(m);
+    int bad = 0;
+    for (const std::vector<int> &f : pm.faces) {
+        D3 q[4];
+        for (size_t k = 0; k < f.size(); ++k) q[k] = pm.points[f[k]];
+        const int n = int(f.size());
+        const D3 area = vcg_ext::VectorArea(q, n);
+        D3 centroid(0, 0, 0);
+        for (int k = 0; k < n; ++k) centroid += q[k] / double(n);
+        bool good = area.Norm() > 0 && surface.FacesEveryClosest(centroid, area);
+        if (good && n == 4) good = !vcg_ext::IsFolded(q) && vcg_ext::ScaledJacobian(q, surface.NormalUnder(centroid, area / area.Norm())) > 0;
+        bad += !good;
+    }
+    return bad;
+}
+
+// Two sheets 0.1 apart, z = 0 facing +z (`upper`, a 6 x 6 grid of unit cells with its diagonals
+// one way) and z = -0.1 facing -z: a plate, or fingers touching.
+void MakeTwoSheets(TMesh &upper, TMesh &input)
+{
+    TMesh lower;
+    MakeGrid(upper, 6, 6.f, 0.f, 1, false);
+    MakeGrid(lower, 6, 6.f, 0.f, 1, false);
+    for (TVertex &v : lower.vert) v.P()[2] = -0.1f;
+    for (TFace &f : lower.face) std::swap(f.V(0), f.V(1));
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, upper);
+    vcg::tri::Append<TMesh, TMesh>::Mesh(input, lower);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+}
+}  // namespace
+
+TEST(FlippedFaceMend, AQuadSunkNearerTheSheetBehindIsLiftedPastItsOwnSheet)
+{
+    // the output: unit quads on the upper sheet, the four corners of the quad [2,3]^2 sunk to
+    // z = -0.07, so its centroid is nearer the lower sheet: turned over. No corner put back on
+    // the upper sheet alone mends it (its centroid would still be at z = -0.0525). Its corners are
+    // moved together toward the upper sheet's point nearest its centroid and past it: by 1.5 times
+    // the centroid's distance (kLifts' first), to z = -0.07 + 0.105 = 0.035, off the input by a
+    // third of the gap; every face then faces the input and the other vertices stay.
+    TMesh upper, input, m;
+    MakeTwoSheets(upper, input);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, upper);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    for (TFace &f : m.face)  // the cell diagonals are faux: unit quads
+        for (int k = 0; k < 3; ++k)
+            if (f.P0(k)[0] != f.P1(k)[0] && f.P0(k)[1] != f.P1(k)[1]) f.SetF(k);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    const std::vector<TVertex *> sunk{At(m, 2, 2), At(m, 3, 2), At(m, 3, 3), At(m, 2, 3)};
+    for (TVertex *v : sunk) v->P()[2] = -0.07f;
+    ASSERT_EQ(BadPolygons(m, surface), 1);
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(BadPolygons(m, surface), 0);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_EQ(st.mended, 1);
+    EXPECT_EQ(m.fn, 72);
+    for (const TVertex &v : m.vert) {
+        if (std::find(sunk.begin(), sunk.end(), &v) != sunk.end()) {
+            EXPECT_NEAR(v.cP()[2], 0.035, 1e-6) << "a sunk corner not lifted past the upper sheet by 1.5 times the centroid's depth";
+        } else {
+            EXPECT_EQ(v.cP()[2], 0.f) << "a vertex of another face moved";
+        }
+    }
+}
+
+TEST(FlippedFaceMend, AQuadNoMoveMendsIsCollapsedAlongItsDiagonal)
+{
+    // the input: a 6 x 6 grid folded along y = x (flat for x <= y, rising 3 per unit beyond: a
+    // crease of 77 degrees along the cell diagonals), with (3, 2) and (2, 3) pushed out by 0.3;
+    // the output: the same, cells off the crease are quads, those on it triangles but [2,3]^2,
+    // a quad, with (2, 2) slid along the crease to (2.9, 2.9): that quad turns concave (its corner
+    // there reflex), the faces around stay convex. Its corners (2, 2) and (3, 3) are on the crease,
+    // every other vertex on the front (every side not at (2, 2) selected): no move mends it. Its diagonal is
+    // collapsed, (2, 2) onto (3, 3) (the other way (3, 3) is on the front): one quad and one
+    // vertex fewer, a manifold with reciprocal face-face adjacency, every front edge kept (the side
+    // (2, 2) - (3.3, 2) glued to the front side (3.3, 2) - (3, 3) is front), nothing left bad.
+    TMesh input, m;
+    MakeGrid(m, 6, 6.f, 0.f, 1, false);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    TVertex *u = At(m, 2, 2), *w = At(m, 3, 3);
+    ASSERT_TRUE(u && w);
+    for (TFace &f : m.face)  // on the flat grid: which sides are faux, which front
+        for (int k = 0; k < 3; ++k) {
+            const bool diagonal = f.P0(k)[0] != f.P1(k)[0] && f.P0(k)[1] != f.P1(k)[1];
+            const bool onCrease = f.P0(k)[0] == f.P0(k)[1] && f.P1(k)[0] == f.P1(k)[1];
+            const bool atU = f.V0(k) == u || f.V1(k) == u;
+            if (diagonal && (!onCrease || (atU && (f.V0(k) == w || f.V1(k) == w)))) f.SetF(k);
+            else if (!atU) f.SetFaceEdgeS(k);
+        }
+    At(m, 3, 2)->P()[0] = 3.3f;
+    At(m, 2, 3)->P()[1] = 3.3f;
+    for (TVertex &v : m.vert) v.P()[2] = 3 * std::max(0.f, v.P()[0] - v.P()[1]);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(m);
+    vcg::tri::UpdateBounding<TMesh>::Box(m);
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, m);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    u->P() = P3(2.9f, 2.9f, 0);
+    ASSERT_EQ(BadPolygons(m, surface), 1);
+    std::vector<std::pair<P3, P3>> frontBefore;  // as points, (2, 2) read as (3, 3)
+    auto renamed = [&](const TVertex *v) { return v == u ? w->cP() : v->cP(); };
+    for (const TFace &f : m.face)
+        for (int k = 0; k < 3; ++k)
+            if (f.IsFaceEdgeS(k)) frontBefore.push_back({renamed(f.cV0(k)), renamed(f.cV1(k))});
+    const int faces = m.fn, verts = m.vn;
+
+    const Mend::Stats st = Mend::Do(m, surface, 60);
+    EXPECT_EQ(st.quadsCollapsed, 1);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_EQ(BadPolygons(m, surface), 0);
+    EXPECT_EQ(m.fn, faces - 2);
+    EXPECT_EQ(m.vn, verts - 1);
+    EXPECT_EQ(int(m.face.size()), m.fn) << "not compacted";
+    ASSERT_EQ(st.removedPolygons.size(), 1u);
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            TFace *g = f.FFp(k);
+            if (g == &f) continue;  // the grid's border
+            EXPECT_EQ(g->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
+            EXPECT_EQ(g->V0(f.FFi(k)), f.V1(k));
+            EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
+        }
+    for (const auto &e : frontBefore) {
+        if (e.first == e.second) continue;  // a side of the collapsed quad
+        bool found = false;
+        for (const TFace &f : m.face)
+            for (int k = 0; k < 3; ++k)
+                found = found || (f.IsFaceEdgeS(k) && ((f.cP0(k) == e.first && f.cP1(k) == e.second) || (f.cP0(k) == e.second && f.cP1(k) == e.first)));
+        EXPECT_TRUE(found) << "front edge (" << e.first[0] << ", " << e.first[1] << ") - (" << e.second[0] << ", " << e.second[1] << ") lost";
+    }
+}

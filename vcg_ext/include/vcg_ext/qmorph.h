@@ -458,10 +458,10 @@ private:
                 out.referenceNormals.erase(out.referenceNormals.begin() + *p);
             out.referenceNormals.insert(out.referenceNormals.end(), mend.splitNormals.begin(), mend.splitNormals.end());
             res.triangles += 2 * mend.split - 2 * (mend.collapsed - mend.quadsHalved);
-            res.quads -= mend.quadsHalved;
+            res.quads -= mend.quadsHalved + mend.quadsCollapsed;
             res.mend.Add(mend);
             if (mend.mended || mend.needlesRemoved) res.quality = measure();
-            if (!(mend.split || mend.collapsed || mend.needlesFlipped)) break;
+            if (!(mend.split || mend.collapsed || mend.quadsCollapsed || mend.needlesFlipped)) break;
         }
     }
 

@@ -103,9 +103,11 @@ public:
     // The input triangle closest to p among those facing `direction` (normal * direction > 0), or
     // null: where two sheets of the input lie closer than an output face's chord error (fingers
     // touching, two bones side by side), the closest point may be on the sheet behind.
-    const FaceType *ClosestFacing(const CoordType &p, const P3 &direction, CoordType &closest)
+    // maxDistance < 0: anywhere; else only within that distance.
+    const FaceType *ClosestFacing(const CoordType &p, const P3 &direction, CoordType &closest, double maxDistance = -1)
     {
-        return Search(p, mesh.bbox.Diag(), [&](int f) { return P3::Construct(Normal(&mesh.face[f])) * direction > 0; }, closest);
+        return Search(p, maxDistance < 0 ? mesh.bbox.Diag() : maxDistance,
+                      [&](int f) { return P3::Construct(Normal(&mesh.face[f])) * direction > 0; }, closest);
     }
 
     // One closest-point search at a point, for the several questions a caller asks there (each
