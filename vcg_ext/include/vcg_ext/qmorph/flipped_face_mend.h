@@ -7,7 +7,10 @@
 // reads them). Where two sheets of the input lie closer than the faces' chord error (fingers
 // touching: man, two bones side by side: bones), that centroid may project onto the sheet behind;
 // then places around the corner are tried on the sheet the face faces. Corners on the front, on a
-// border or on a sharp crease of the input never move.
+// border or on a sharp crease of the input never move. What single moves leave: tangles (corners
+// moved while the count of bad faces around them falls), then faces whose centroid sags nearer
+// such a sheet behind (their free corners lifted together toward the sheet they face).
+// A quad no move mends is collapsed along its diagonal (the all-quads output stays all quads).
 // A triangle no move mends is removed by collapsing a side with the triangle across it, or with
 // half of a quad across it (tiny triangles at the fingers of man, kept aside), else split on the
 // sheet it faces. A needle (its apex on its longest side), flipped or not, is removed too:
