@@ -34,6 +34,36 @@ TVertex *At(TMesh &m, float x, float y)
     return nullptr;
 }
 
+
+// Two sheets 0.1 apart, z = 0 facing +z (`upper`, an n x n grid of unit cells with its diagonals
+// one way) and z = -0.1 facing -z: a plate, or fingers touching.
+void MakeTwoSheets(TMesh &upper, TMesh &input, int n)
+{
+    TMesh lower;
+    MakeGrid(upper, n, float(n), 0.f, 1, false);
+    MakeGrid(lower, n, float(n), 0.f, 1, false);
+    for (TVertex &v : lower.vert) v.P()[2] = -0.1f;
+    for (TFace &f : lower.face) std::swap(f.V(0), f.V(1));
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, upper);
+    vcg::tri::Append<TMesh, TMesh>::Mesh(input, lower);
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    vcg::tri::UpdateBounding<TMesh>::Box(input);
+}
+
+// Face-face adjacency reciprocal across every inner side, with no inner side flagged as border
+// (after a collapse).
+void ExpectValidAdjacency(TMesh &m)
+{
+    for (TFace &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            TFace *g = f.FFp(k);
+            if (g == &f) continue;  // the grid's border
+            EXPECT_EQ(g->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
+            EXPECT_EQ(g->V0(f.FFi(k)), f.V1(k));
+            EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
+            EXPECT_FALSE(f.IsB(k)) << "an inner side flagged as border";
+        }
+}
 }  // namespace
 
 TEST(FlippedFaceMend, AVertexDraggedPastItsNeighbourIsPutBack)
@@ -126,15 +156,8 @@ TEST(FlippedFaceMend, AVertexOnTheSheetBehindMovesToTheSheetItsFacesFace)
     // z = -0.06 and (2, 2) itself on the lower sheet, so its six faces lie nearer the lower sheet
     // and turn away from it. Its neighbours' centroid is nearer the lower sheet too: only a move onto
     // the sheet its faces face mends them.
-    TMesh upper, lower, input, m;
-    MakeGrid(upper, 4, 4.f, 0.f, 1, false);
-    MakeGrid(lower, 4, 4.f, 0.f, 1, false);
-    for (TVertex &v : lower.vert) v.P()[2] = -0.1f;
-    for (TFace &f : lower.face) std::swap(f.V(0), f.V(1));
-    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, upper);
-    vcg::tri::Append<TMesh, TMesh>::Mesh(input, lower);
-    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
-    vcg::tri::UpdateBounding<TMesh>::Box(input);
+    TMesh upper, input, m;
+    MakeTwoSheets(upper, input, 4);
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, upper);
     vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
     vcg_ext::InputSurface<TMesh> surface(input);
@@ -255,15 +278,7 @@ TEST(FlippedFaceMend, ATriangleNoMoveMendsIsCollapsedWithTheTriangleAcrossItsSid
     EXPECT_EQ(m.vn, verts - st.collapsed);
     EXPECT_EQ(int(m.face.size()), m.fn) << "not compacted";
     EXPECT_EQ(st.removedPolygons.size(), size_t(2 * st.collapsed));
-    for (TFace &f : m.face)
-        for (int k = 0; k < 3; ++k) {
-            TFace *g = f.FFp(k);
-            if (g == &f) continue;  // the grid's border
-            EXPECT_EQ(g->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
-            EXPECT_EQ(g->V0(f.FFi(k)), f.V1(k));
-            EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
-            EXPECT_FALSE(f.IsB(k)) << "an inner side flagged as border";
-        }
+    ExpectValidAdjacency(m);
 }
 
 namespace {
@@ -537,20 +552,6 @@ int BadPolygons(TMesh &m, vcg_ext::InputSurface<TMesh> &surface)
     return bad;
 }
 
-// Two sheets 0.1 apart, z = 0 facing +z (`upper`, a 6 x 6 grid of unit cells with its diagonals
-// one way) and z = -0.1 facing -z: a plate, or fingers touching.
-void MakeTwoSheets(TMesh &upper, TMesh &input)
-{
-    TMesh lower;
-    MakeGrid(upper, 6, 6.f, 0.f, 1, false);
-    MakeGrid(lower, 6, 6.f, 0.f, 1, false);
-    for (TVertex &v : lower.vert) v.P()[2] = -0.1f;
-    for (TFace &f : lower.face) std::swap(f.V(0), f.V(1));
-    vcg::tri::Append<TMesh, TMesh>::MeshCopy(input, upper);
-    vcg::tri::Append<TMesh, TMesh>::Mesh(input, lower);
-    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
-    vcg::tri::UpdateBounding<TMesh>::Box(input);
-}
 }  // namespace
 
 TEST(FlippedFaceMend, AQuadSunkNearerTheSheetBehindIsLiftedPastItsOwnSheet)
@@ -562,7 +563,7 @@ TEST(FlippedFaceMend, AQuadSunkNearerTheSheetBehindIsLiftedPastItsOwnSheet)
     // the centroid's distance (kLifts' first), to z = -0.07 + 0.105 = 0.035, off the input by a
     // third of the gap; every face then faces the input and the other vertices stay.
     TMesh upper, input, m;
-    MakeTwoSheets(upper, input);
+    MakeTwoSheets(upper, input, 6);
     vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, upper);
     vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
     for (TFace &f : m.face)  // the cell diagonals are faux: unit quads
@@ -635,14 +636,7 @@ TEST(FlippedFaceMend, AQuadNoMoveMendsIsCollapsedAlongItsDiagonal)
     EXPECT_EQ(m.vn, verts - 1);
     EXPECT_EQ(int(m.face.size()), m.fn) << "not compacted";
     ASSERT_EQ(st.removedPolygons.size(), 1u);
-    for (TFace &f : m.face)
-        for (int k = 0; k < 3; ++k) {
-            TFace *g = f.FFp(k);
-            if (g == &f) continue;  // the grid's border
-            EXPECT_EQ(g->FFp(f.FFi(k)), &f) << "face-face adjacency not reciprocal";
-            EXPECT_EQ(g->V0(f.FFi(k)), f.V1(k));
-            EXPECT_EQ(g->V1(f.FFi(k)), f.V0(k));
-        }
+    ExpectValidAdjacency(m);
     for (const auto &e : frontBefore) {
         if (e.first == e.second) continue;  // a side of the collapsed quad
         bool found = false;

@@ -322,29 +322,17 @@ private:
                 FaceType &t = end == 0 ? f : *g;
                 const int e = end == 0 ? k : j;
                 const int u = index(t.V0(e)), w = index(t.V1(e));
-                if (pg.fixed[u]) continue;
-                if (surface.OnCrease(position(u), creaseAngleDeg) && !surface.OnCrease(position(w), creaseAngleDeg)) continue;
                 // the polygons around u but the two triangles, with u at w: facing the input, no
-                // quad worse (as a corner move is judged)
-                const CoordType old = m.vert[u].cP();
-                std::vector<double> before;
-                std::vector<char> needleBefore;
-                for (int h : pg.facesOf[u]) {
-                    before.push_back(std::min(kConvex, jacobian(h)));
-                    needleBefore.push_back(IsNeedle(pg, h, position, needleHeight));
-                }
-                m.vert[u].P() = m.vert[w].cP();
-                bool fine = true;
-                for (size_t i = 0; i < pg.facesOf[u].size() && fine; ++i) {
-                    const int h = pg.facesOf[u][i];
-                    if (h == face || h == across) continue;
-                    fine = facesInput(h) && jacobian(h) >= before[i] && (needleBefore[i] || !IsNeedle(pg, h, position, needleHeight));
-                }
+                // quad worse (as a corner move is judged); the quad's half left a triangle facing the
+                // input, no needle
+                bool fine = MayCollapse(m, pg, u, w, {face, across}, position, facesInput, jacobian, surface, creaseAngleDeg, needleHeight);
                 if (half && fine) {
+                    const CoordType old = m.vert[u].cP();
+                    m.vert[u].P() = m.vert[w].cP();
                     const P3 q[3] = {P3::Construct(half->cP(0)), P3::Construct(half->cP(1)), P3::Construct(half->cP(2))};
                     fine = OutputPolygons::FacesInput(q, 3, surface) && NeedleSide(q, needleHeight) < 0;
+                    m.vert[u].P() = old;
                 }
-                m.vert[u].P() = old;
                 if (!fine) continue;
                 std::vector<VertexType *> ring;
                 vcg::face::VVOrderedStarFF(vcg::face::Pos<FaceType>(&t, e, t.V0(e)), ring);
@@ -357,6 +345,34 @@ private:
             }
         }
         return -1;
+    }
+
+    // Whether vertex u may be collapsed onto w: u free (on a sharp crease of the input only if w is
+    // too), and every polygon around u but the ones removed (`gone`), with u at w, facing the input,
+    // no quad worse (as a corner move is judged), no new needle. m is left as it was.
+    template <class Position, class Faces, class Jacobian>
+    static bool MayCollapse(MeshType &m, const OutputPolygons &pg, int u, int w, std::array<int, 2> gone, Position position,
+                            Faces facesInput, Jacobian jacobian, InputSurface<MeshType> &surface, double creaseAngleDeg,
+                            double needleHeight)
+    {
+        if (pg.fixed[u]) return false;
+        if (surface.OnCrease(position(u), creaseAngleDeg) && !surface.OnCrease(position(w), creaseAngleDeg)) return false;
+        const CoordType old = m.vert[u].cP();
+        std::vector<double> before;
+        std::vector<char> needleBefore;
+        for (int h : pg.facesOf[u]) {
+            before.push_back(std::min(kConvex, jacobian(h)));
+            needleBefore.push_back(IsNeedle(pg, h, position, needleHeight));
+        }
+        m.vert[u].P() = m.vert[w].cP();
+        bool fine = true;
+        for (size_t i = 0; i < pg.facesOf[u].size() && fine; ++i) {
+            const int h = pg.facesOf[u][i];
+            if (h == gone[0] || h == gone[1]) continue;
+            fine = facesInput(h) && jacobian(h) >= before[i] && (needleBefore[i] || !IsNeedle(pg, h, position, needleHeight));
+        }
+        m.vert[u].P() = old;
+        return fine;
     }
 
     // vcglib's FFEdgeCollapse of t's side e (its V0 onto its V1), a front edge on either side it
@@ -406,24 +422,7 @@ private:
             FaceType &t = end == 0 ? f : other;
             const int e = end == 0 ? z : f.FFi(z);
             const int u = index(t.V0(e)), w = index(t.V1(e));
-            if (pg.fixed[u]) continue;
-            if (surface.OnCrease(position(u), creaseAngleDeg) && !surface.OnCrease(position(w), creaseAngleDeg)) continue;
-            const CoordType old = m.vert[u].cP();
-            std::vector<double> before;
-            std::vector<char> needleBefore;
-            for (int h : pg.facesOf[u]) {
-                before.push_back(std::min(kConvex, jacobian(h)));
-                needleBefore.push_back(IsNeedle(pg, h, position, kNeedleHeight));
-            }
-            m.vert[u].P() = m.vert[w].cP();
-            bool fine = true;
-            for (size_t i = 0; i < pg.facesOf[u].size() && fine; ++i) {
-                const int h = pg.facesOf[u][i];
-                if (h == face) continue;
-                fine = facesInput(h) && jacobian(h) >= before[i] && (needleBefore[i] || !IsNeedle(pg, h, position, kNeedleHeight));
-            }
-            m.vert[u].P() = old;
-            if (!fine) continue;
+            if (!MayCollapse(m, pg, u, w, {face, face}, position, facesInput, jacobian, surface, creaseAngleDeg, kNeedleHeight)) continue;
             std::vector<VertexType *> ring;
             vcg::face::VVOrderedStarFF(vcg::face::Pos<FaceType>(&t, e, t.V0(e)), ring);
             CollapseKeepingFront(m, t, e);
