@@ -646,3 +646,43 @@ TEST(FlippedFaceMend, AQuadNoMoveMendsIsCollapsedAlongItsDiagonal)
         EXPECT_TRUE(found) << "front edge (" << e.first[0] << ", " << e.first[1] << ") - (" << e.second[0] << ", " << e.second[1] << ") lost";
     }
 }
+
+TEST(FlippedFaceMend, AFaceWhoseChildWouldTurnOverIsMendedBeforeTheSplit)
+{
+    // two sheets 0.1 apart (upper z = 0 facing +z, lower z = -0.1 facing -z); the quad (1, 1),
+    // (3, 1), (3, 3), (1, 3) with (3, 3) on the lower sheet: its centroid (z = -0.025) is nearer
+    // the upper one, so it faces the input, and only one corner faces away; but the all-quads
+    // split's child at (3, 3) has its centroid at z = -(0.1 + 0.05 + 0.025 + 0.05) / 4 = -0.05625,
+    // nearer the lower sheet: it would turn over.
+    TMesh upper, input, m;
+    MakeTwoSheets(upper, input, 6);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    typedef vcg_ext::qmorph::OutputPolygons Polygons;
+    const D3 bridging[4] = {D3(1, 1, 0), D3(3, 1, 0), D3(3, 3, -0.1), D3(1, 3, 0)};
+    const D3 flat[4] = {D3(1, 1, 0), D3(3, 1, 0), D3(3, 3, 0), D3(1, 3, 0)};
+    EXPECT_TRUE(Polygons::FacesInput(bridging, 4, surface)) << "the centroid's judge is fooled";
+    EXPECT_FALSE(Polygons::CornersFaceAway(bridging, 4, surface));
+    EXPECT_TRUE(Polygons::ChildFacesAway(bridging, 4, surface));
+    EXPECT_FALSE(Polygons::ChildFacesAway(flat, 4, surface));
+
+    // the same on the output before the split: a grid of unit quads on the upper sheet with (3, 3)
+    // on the lower one; each of its four quads is judged right at its centroid (z = -0.025), so
+    // only the check of the children (byCorners) puts it back on the upper sheet
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, upper);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+    for (TFace &f : m.face)  // the cell diagonals are faux: unit quads
+        for (int k = 0; k < 3; ++k)
+            if (f.P0(k)[0] != f.P1(k)[0] && f.P0(k)[1] != f.P1(k)[1]) f.SetF(k);
+    TVertex *sunk = At(m, 3, 3);
+    sunk->P()[2] = -0.1f;
+    ASSERT_EQ(BadPolygons(m, surface), 0);
+    TMesh judgedByCentroid;
+    vcg::tri::Append<TMesh, TMesh>::MeshCopy(judgedByCentroid, m);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(judgedByCentroid);
+    EXPECT_EQ(Mend::Do(judgedByCentroid, surface, 60).mended, 0);
+
+    const Mend::Stats st = Mend::Do(m, surface, 60, true);
+    EXPECT_GE(st.mended, 1);
+    EXPECT_EQ(st.left, 0);
+    EXPECT_FLOAT_EQ(sunk->P()[2], 0.f) << "the corner is not back on the upper sheet";
+}

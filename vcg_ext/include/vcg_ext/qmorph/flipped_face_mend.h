@@ -19,8 +19,11 @@
 // kept aside). The caller runs it again while a round changed faces (QMorph::kMendRounds).
 //
 // Before the all-quads split it also runs on faces whose every corner lies on an input triangle
-// facing away (OutputPolygons::CornersFaceAway, `byCorners`): judged right by their centroid, their
-// children would not be; and with a larger needle height, so that slivers go too.
+// facing away (OutputPolygons::CornersFaceAway, `byCorners`), or one of whose straight children
+// (a corner, two side midpoints, the centre) would be turned away under its centroid
+// (OutputPolygons::ChildFacesAway: a face bridging two sheets of the input closer than its size):
+// judged right by their centroid, their children would not be; and with a larger needle height, so
+// that slivers go too.
 //
 // Every operation of the patch meshing is judged against the input already; this catches what
 // still slips through: on armadillo_52k x16 (832k faces) a tangle of 8 small triangles standing on
@@ -85,7 +88,8 @@ public:
     // its selected face-edges. Moves vertices; a triangle no move mends, or a needle, is collapsed,
     // flipped away or (flipped) split (the face vectors are compacted when a collapse deleted
     // faces: the output's polygons keep their order, less `removedPolygons`).
-    // byCorners: a face whose corners all lie on input triangles facing away counts as flipped too;
+    // byCorners: a face whose corners all lie on input triangles facing away, or whose all-quads
+    // children would turn away, counts as flipped too;
     // needleHeight: a triangle whose apex is nearer its longest side than this fraction of it is a
     // needle (kNeedleHeight: degenerate once written in float; more: slivers).
     static Stats Do(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg, bool byCorners = false,
@@ -100,12 +104,12 @@ public:
             pg.Points(face, position, q);
             return OutputPolygons::QuadJacobian(q, surface);
         };
-        auto cornersFaceAway = [&](int face) {
+        auto childrenWouldTurn = [&](int face) {  // in the all-quads split
             P3 q[4];
             pg.Points(face, position, q);
-            return OutputPolygons::CornersFaceAway(q, pg.size[face], surface);
+            return OutputPolygons::CornersFaceAway(q, pg.size[face], surface) || OutputPolygons::ChildFacesAway(q, pg.size[face], surface);
         };
-        auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0 || (byCorners && cornersFaceAway(face)); };
+        auto bad = [&](int face) { return !facesInput(face) || jacobian(face) <= 0 || (byCorners && childrenWouldTurn(face)); };
         Stats st;
         std::vector<char> facedBefore;
         std::vector<double> jacobianBefore;

@@ -141,6 +141,22 @@ struct OutputPolygons {
         return true;
     }
 
+    // Whether one of the straight quads the all-quads split would make of the polygon q (a corner,
+    // the midpoints of its sides, the centre) is turned away from the input under its centroid (as
+    // FacesInput judges it): a face bridging two sheets of the input closer than its size, some
+    // corners on the sheet behind, passes at its own centroid and its children do not (man, bones,
+    // kept aside; block).
+    template <class Surface>
+    static bool ChildFacesAway(const P3 *q, int n, Surface &surface)
+    {
+        const P3 centre = Centroid(q, n);
+        for (int k = 0; k < n; ++k) {
+            const P3 child[4] = {q[k], (q[k] + q[(k + 1) % n]) / 2.0, centre, (q[(k + n - 1) % n] + q[k]) / 2.0};
+            if (!FacesInput(child, 4, surface)) return true;
+        }
+        return false;
+    }
+
     // A quad's scaled Jacobian on the input's normal under it (as the quality report reads it); -1
     // when it is folded or has no area.
     template <class Surface>
