@@ -201,12 +201,9 @@ constexpr double kInputTriangles = -1, kAutomaticLength = 0, kOnePercentOfTheDia
 
 // Filters 1-4 with their defaults on a Debian-package mesh, Q-Morph's re-meshing as remeshFactor
 // says, VSA's Max regions as maxRegions says (< 0: its default). Checks the output contract.
-static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAutomaticLength, bool preserveFront = true,
-                             int *trianglesLeft = nullptr, int maxRegions = -1)
+static void RunWholePipelineOn(PluginHarness &h, MeshModel *mm, double remeshFactor = kAutomaticLength, bool preserveFront = true,
+                               int *trianglesLeft = nullptr, int maxRegions = -1)
 {
-    PluginHarness h;
-    ASSERT_NE(h.LoadOff(MeshDir() + "/" + mesh + ".off"), nullptr);
-    MeshModel *mm = h.doc.mm();
     const int eulerIn = mm->cm.vn - mm->cm.fn * 3 / 2 + mm->cm.fn;
     for (const char *f : {"Segment by Variational Shape Approximation", "Smooth Region Boundaries",
                           "Split Triangles along Front"}) {
@@ -277,9 +274,32 @@ static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAut
     EXPECT_EQ(mm->cm.vn - mm->cm.fn * 3 / 2 + mm->cm.fn, eulerIn) << "genus kept";
 }
 
+static void RunWholePipeline(const std::string &mesh, double remeshFactor = kAutomaticLength, bool preserveFront = true,
+                             int *trianglesLeft = nullptr, int maxRegions = -1)
+{
+    PluginHarness h;
+    MeshModel *mm = h.LoadOff(MeshDir() + "/" + mesh + ".off");
+    ASSERT_NE(mm, nullptr);
+    RunWholePipelineOn(h, mm, remeshFactor, preserveFront, trianglesLeft, maxRegions);
+}
+
 // The defaults: re-meshed first at the automatic length; and on the split mesh's own triangles.
 TEST(QMorphPlugin, WholePipelineOnFandisk) { RunWholePipeline("fandisk"); }
 TEST(QMorphPlugin, WholePipelineOnFandiskAsTriangulated) { RunWholePipeline("fandisk", kInputTriangles); }
+
+// A thin plate, 1 x 1 x 0.001, each side an 8 x 8 grid (MakeCube scaled): VSA's front is one rim,
+// and the other rim and the four short edges are creases the re-meshing keeps though the rim's
+// triangles are needles at the automatic length (1% of the diagonal), each in its neighbour's
+// plane. When they were dropped as a needle's creases, faces across the plate's corners turned over
+// (through meshlabserver: 10 flipped faces by evalquad, 9 by the log).
+TEST(QMorphPlugin, WholePipelineOnAThinPlateWhoseRimIsNeedles)
+{
+    TMesh plate;
+    MakeCube(plate, 8);
+    for (auto &v : plate.vert) v.P() = vcg::Point3f(v.P()[0] / 2, v.P()[1] / 2, v.P()[2] / 2000);
+    PluginHarness h;
+    RunWholePipelineOn(h, h.AddCopyOf(plate));
+}
 
 // Coarse re-meshing of the armadillo's thin, hairpin-shaped region fronts: two patches could make the
 // same chord between front nodes (a non-manifold edge) unless such chords are refused.

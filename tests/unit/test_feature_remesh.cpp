@@ -222,6 +222,40 @@ TEST(FeatureRemesh, AnchorAtOnePercentOfItsDiagonal)
     EXPECT_LE(fig.hausdorff, 0.005) << "Hausdorff distance to the input, fraction of the diagonal";
 }
 
+// A thin plate, 2 x 2 x 0.004, each side an 8 x 8 grid (MakeCube flattened): its rim's triangles
+// are needles (0.25 long, 0.0005 high: under the re-meshing's 0.05 L at L = 0.04), each in the plane
+// of its neighbour across the grid's diagonal. Only the top rim is the front; the bottom rim and
+// the four short vertical edges are creases the re-meshing must keep (a needle in its
+// neighbour's plane has the surface's normal): dropped as a needle's creases, the rim's corners
+// were cut by faces turned over (the whole pipeline on such a plate: 10 faces flipped).
+TEST(FeatureRemesh, ThinPlateRimOfNeedlesKeepsItsCreases)
+{
+    const float thickness = 0.004f;
+    TMesh m;
+    MakeCube(m, 8);
+    for (auto &v : m.vert) v.P()[2] *= thickness / 2;
+    vcg::tri::UpdateBounding<TMesh>::Box(m);
+    ASSERT_EQ(SelectCreases(m, 45), 12 * 8) << "the 12 plate edges, 8 pieces each";
+    int front = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            const bool topRim = f.P0(k)[2] == thickness / 2 && f.P1(k)[2] == thickness / 2;
+            if (f.IsFaceEdgeS(k) && !topRim) f.ClearFaceEdgeS(k);
+            front += f.IsFaceEdgeS(k) ? 1 : 0;
+        }
+    ASSERT_EQ(front, 2 * 4 * 8) << "the top rim, selected on both sides";
+    const double L = 0.04;
+    int needles = 0;  // height on the longest side (longest / AspectRatio) under 0.05 L
+    for (const auto &f : m.face) {
+        double longest = 0;
+        for (int k = 0; k < 3; ++k) longest = std::max(longest, double((f.cP((k + 1) % 3) - f.cP(k)).Norm()));
+        needles += longest / AspectRatio(f) < 0.05 * L ? 1 : 0;
+    }
+    ASSERT_EQ(needles, 4 * 8 * 8 * 2) << "the rim's triangles, and only they, must be needles at L";
+    const Figures fig = RemeshAndCheck(m, L, "thin plate");
+    EXPECT_LE(fig.hausdorff, 0.005) << "Hausdorff distance to the input, fraction of the diagonal";
+}
+
 namespace {
 
 using vcg_ext::qmorph::MixedMesh;

@@ -371,21 +371,38 @@ private:
 
     // A face lower than this times L (its height on its longest edge) is a needle.
     static constexpr double kNeedleHeight = 0.05;
+    // A needle whose normal is within this of a neighbour's (degrees), and not turned over against
+    // its other two, lies in that neighbour's plane: its normal is the surface's (the triangles of a
+    // wall thinner than 0.05 L, as a thin plate's rim tessellated in rows, are all needles, and
+    // their edges on the plate's faces are its creases). Two needles turned over together are
+    // within it of each other, but turned over against the rest.
+    static constexpr double kSupportedNeedleDeg = 5;
     // A face whose normal is farther than this from each of its neighbours' is turned over.
     static constexpr double kTurnedCos = -0.5;  // 120 degrees
 
-    // Whether f's normal is noise at the scale of the output: a needle, or a face turned over
-    // against all of its neighbours (a fold of the tessellation, no surface has one). A sharp edge
-    // such a face makes is no crease: CAD tessellations have them along their creases (block:
-    // needles and caps folded 150-180 degrees from their neighbours), and kept as creases their
-    // edges fenced in needles that no quad could take.
+    // Whether f's normal is noise at the scale of the output: a needle in no neighbour's plane (see
+    // kSupportedNeedleDeg), or a face turned over against all of its neighbours (a fold of the
+    // tessellation, no surface has one). A sharp edge such a face makes is no crease: CAD
+    // tessellations have them along their creases (block: needles and caps folded 150-180 degrees
+    // from their neighbours), and kept as creases their edges fenced in needles that no quad could
+    // take.
     static bool Unreliable(const FaceType &f, double L)
     {
         double longest = 0;
         for (int k = 0; k < 3; ++k) longest = std::max(longest, (Pos(f.cV1(k)) - Pos(f.cV(k))).Norm());
         const double doubleArea = ((Pos(f.cV(1)) - Pos(f.cV(0))) ^ (Pos(f.cV(2)) - Pos(f.cV(0)))).Norm();
-        if (doubleArea < kNeedleHeight * L * longest) return true;
         const P3 n = UnitNormal(f);
+        if (doubleArea < kNeedleHeight * L * longest) {
+            const double supportCos = std::cos(kSupportedNeedleDeg * M_PI / 180);
+            int inPlane = 0, notTurned = 0;
+            for (int k = 0; k < 3; ++k)
+                if (f.cFFp(k) != &f) {
+                    const double c = n * UnitNormal(*f.cFFp(k));
+                    inPlane += c > supportCos;
+                    notTurned += c > kTurnedCos;
+                }
+            return !(inPlane >= 1 && notTurned >= 2);
+        }
         for (int k = 0; k < 3; ++k)
             if (f.cFFp(k) == &f || n * UnitNormal(*f.cFFp(k)) > kTurnedCos) return false;
         return true;
