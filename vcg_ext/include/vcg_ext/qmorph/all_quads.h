@@ -40,6 +40,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/quad_quality.h>
@@ -65,7 +66,7 @@ public:
     static Stats Split(MeshType &m, InputSurface<MeshType> &surface, double creaseAngleDeg)
     {
         vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         const bool hasQuality = vcg::tri::HasPerFaceQuality(m);
         std::vector<Polygon> polygons = Gather(m);
         std::unordered_set<uint64_t> selected;
@@ -174,7 +175,7 @@ public:
             (fi - 2)->SetF(2);  // t1's edge v[2] - v[0] and t2's edge v[0] - v[2]: the diagonal
             (fi - 1)->SetF(0);
         }
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         st.quads = int(quads.size());
         return st;
     }

@@ -24,6 +24,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/segment_grid.h>
 
 namespace vcg_ext {
@@ -105,7 +106,7 @@ private:
 
     static int Pass(MeshType &m, double L)
     {
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         // the feature edges, once each, and every vertex's feature neighbours
         SegmentGrid grid(L);
@@ -161,7 +162,7 @@ private:
         FootPoint place(&m, &feet);
         IsChosen chosen{&m, &feet};
         vcg::tri::RefineE(m, place, chosen);
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         return int(feet.size());
     }

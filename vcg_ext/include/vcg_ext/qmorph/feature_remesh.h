@@ -42,6 +42,7 @@
 #include <vcg_ext/common/canonical_faces.h>
 #include <vcg_ext/common/edge_flip.h>
 #include <vcg_ext/common/face_corners.h>
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/parallel.h>
 #include <vcg_ext/common/segment_grid.h>
@@ -269,7 +270,7 @@ private:
             return n.Norm() > 0 && surface.FacesEveryClosest((a + b + c) / 3.0, n);
         };
         auto faces = [&](const FaceType &f) { return facesInput(Pos(f.cV(0)), Pos(f.cV(1)), Pos(f.cV(2))); };
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         const std::vector<char> fixed = FeatureVertices(m);
         int mended = 0;
@@ -302,7 +303,7 @@ private:
             }
             mended += done;
         }
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         return mended;
     }
@@ -321,7 +322,7 @@ private:
             if (canon.reversed[f]) face.SetUserBit(bit);
             else face.ClearUserBit(bit);
         }
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         return bit;
     }
@@ -335,7 +336,7 @@ private:
                 f.ClearUserBit(bit);
             }
         FaceType::DeleteBitFlag(bit);
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         vcg::tri::UpdateNormal<MeshType>::PerFace(m);
     }
@@ -412,7 +413,7 @@ private:
     // the grid.
     static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<FeatureKind> &kinds, Stats &st, double L)
     {
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
         const double sharpCos = std::cos(ShortEdgeCollapse<MeshType>::kSharpChainDeg * M_PI / 180);
         for (FaceType &f : m.face)
@@ -473,7 +474,7 @@ private:
     static void SelectFront(MeshType &m, const SegmentGrid &grid, const std::vector<FeatureKind> &kinds, Stats &st)
     {
         vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         for (FaceType &f : m.face)
             for (int i = 0; i < 3; ++i) {
                 FaceType *g = f.FFp(i);

@@ -42,6 +42,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/edge_flip.h>
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/qmorph/output_polygons.h>
@@ -214,7 +215,7 @@ public:
         std::sort(st.removedPolygons.begin(), st.removedPolygons.end());
         if (st.collapsed || st.quadsCollapsed) vcg::tri::Allocator<MeshType>::CompactEveryVector(m);  // keeps the order of what is left
         if (st.split || st.collapsed || st.quadsCollapsed || st.needlesFlipped) {
-            vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+            FaceFaceAdjacency<MeshType>::Update(m);
             if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         }
         return st;

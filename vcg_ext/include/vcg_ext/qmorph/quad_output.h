@@ -19,6 +19,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/edge_key.h>
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/qmorph/mixed_mesh.h>
 #include <vcg_ext/qmorph/partition.h>
 #include <vcg_ext/qmorph/surface_projector.h>
@@ -190,7 +191,7 @@ public:
             if (wasUsed[v] && !used[v] && !m.vert[v].IsD()) vcg::tri::Allocator<MeshType>::DeleteVertex(m, m.vert[v]);
         vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
         vcg::tri::UpdateBounding<MeshType>::Box(m);
-        if (vcg::tri::HasFFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        if (vcg::tri::HasFFAdjacency(m)) FaceFaceAdjacency<MeshType>::Update(m);
         if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
         vcg::tri::UpdateNormal<MeshType>::PerVertexNormalizedPerFace(m);
     }

@@ -33,6 +33,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 #include <vcg/space/distance3.h>
 
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/input_surface.h>
 
 namespace vcg_ext {
@@ -134,7 +135,7 @@ public:
                     break;
                 }
         }
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
         return collapses;
     }
 
