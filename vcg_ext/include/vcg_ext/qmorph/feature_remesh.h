@@ -393,20 +393,20 @@ private:
         for (int k = 0; k < 3; ++k) longest = std::max(longest, (Pos(f.cV1(k)) - Pos(f.cV(k))).Norm());
         const double doubleArea = ((Pos(f.cV(1)) - Pos(f.cV(0))) ^ (Pos(f.cV(2)) - Pos(f.cV(0)))).Norm();
         const P3 n = UnitNormal(f);
-        if (doubleArea < kNeedleHeight * L * longest) {
-            const double supportCos = std::cos(kSupportedNeedleDeg * M_PI / 180);
-            int inPlane = 0, notTurned = 0;
-            for (int k = 0; k < 3; ++k)
-                if (f.cFFp(k) != &f) {
-                    const double c = n * UnitNormal(*f.cFFp(k));
-                    inPlane += c > supportCos;
-                    notTurned += c > kTurnedCos;
-                }
-            return !(inPlane >= 1 && notTurned >= 2);
+        const double supportCos = std::cos(kSupportedNeedleDeg * M_PI / 180);
+        int inPlane = 0, notTurned = 0;  // neighbours (across a non-border edge) in f's plane, and not turned over against it
+        bool border = false;
+        for (int k = 0; k < 3; ++k) {
+            if (f.cFFp(k) == &f) {
+                border = true;
+                continue;
+            }
+            const double c = n * UnitNormal(*f.cFFp(k));
+            inPlane += c > supportCos;
+            notTurned += c > kTurnedCos;
         }
-        for (int k = 0; k < 3; ++k)
-            if (f.cFFp(k) == &f || n * UnitNormal(*f.cFFp(k)) > kTurnedCos) return false;
-        return true;
+        if (doubleArea < kNeedleHeight * L * longest) return !(inPlane >= 1 && notTurned >= 2);
+        return !border && notTurned == 0;
     }
 
     // Selected face-edges and sharp creases (but an unreliable face's): both sides flagged, each entered in
