@@ -97,16 +97,27 @@ public:
                 for (int i = 0; i < 3; ++i)
                     if (f.FFp(i) == &f) border[vcg::tri::Index(m, f.V0(i))] = border[vcg::tri::Index(m, f.V1(i))] = 1;
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+        const double minLength = kMinLength * L;
+        // Per vertex: whether an edge at it may be shorter than minLength. Every candidate is at
+        // the end of such an edge, so a vertex without one is passed over without building its
+        // ring (most vertices after the first round). Kept true where it is true: a collapse
+        // changes only the edges at the vertex it keeps, whose ends are marked again.
+        std::vector<char> nearShort(m.vert.size(), 0);
+        auto markShort = [&](VertexType *a, VertexType *b) {
+            if (Distance(a, b) < minLength) nearShort[vcg::tri::Index(m, a)] = nearShort[vcg::tri::Index(m, b)] = 1;
+        };
+        for (FaceType &f : m.face)
+            if (!f.IsD())
+                for (int i = 0; i < 3; ++i) markShort(f.V0(i), f.V1(i));
         int collapses = 0;
         std::vector<Neighbour> ring;
         for (size_t vi = 0; vi < m.vert.size(); ++vi) {
             if (progress && vi % kProgressVertices == 0) progress(double(vi) / double(m.vert.size()));
             VertexType *p = &m.vert[vi];
-            if (p->IsD() || border[vi]) continue;
+            if (p->IsD() || border[vi] || !nearShort[vi]) continue;
             Ring(p, ring);
             std::vector<VertexType *> candidates;
             const int features = int(std::count_if(ring.begin(), ring.end(), [](const Neighbour &n) { return n.feature; }));
-            const double minLength = kMinLength * L;
             if (features == 0) {
                 std::sort(ring.begin(), ring.end(), [p](const Neighbour &a, const Neighbour &b) {
                     return Distance(p, a.v) < Distance(p, b.v);
@@ -131,6 +142,10 @@ public:
             }
             for (VertexType *q : candidates)
                 if (TryCollapse(m, surface, p, q, features == 0 && !border[vcg::tri::Index(m, q)] && !OnFeature(q), L)) {
+                    for (vcg::face::VFIterator<FaceType> vfi(q); !vfi.End(); ++vfi) {
+                        markShort(q, vfi.V1());
+                        markShort(q, vfi.V2());
+                    }
                     ++collapses;
                     break;
                 }
