@@ -26,9 +26,9 @@
 #include <vector>
 
 #include <vcg/complex/complex.h>
-#include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/face_clusters.h>
+#include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/live_box.h>
 #include <vcg_ext/common/progress_relay.h>
 #include <vcg_ext/mesh_checks.h>
@@ -253,7 +253,7 @@ private:
         if (!res.error.empty()) return res;
         vcg::tri::RequireFFAdjacency(m);
         if (cb) cb(1, "VSA: face adjacency");
-        vcg::tri::UpdateTopology<MeshType>::FaceFace(m);
+        FaceFaceAdjacency<MeshType>::Update(m);
 
         if (cb) cb(3, "VSA: face areas and normals");
         VSASegmentation s(m, p, cb);
