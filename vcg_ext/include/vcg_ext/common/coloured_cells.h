@@ -21,15 +21,14 @@ public:
     typedef vcg::Point3d P3;
     static constexpr int kColours = 8;
 
-    // Cells over `box` grown by a cell, their side `side` (at least maxExtent / kMaxCellsPerAxis)
-    // rounded up to a power of two: the grid stays put when the side asked for moves by a rounding
-    // error (the automatic length of a mirrored copy of a mesh differs in its last bits, and a
-    // vertex exactly on a cell's face went to another cell).
+    // Cells over `box` grown by a cell, their side `side` (at least maxExtent / kMaxCellsPerAxis).
+    // The side is used as given: a caller that wants the same cells for a flipped copy of a mesh
+    // passes the same bits (QMorph's automatic length is computed orientation-free for that).
     void Build(const vcg::Box3d &box, double side)
     {
         const double extent = std::max(box.DimX(), std::max(box.DimY(), box.DimZ()));
         const double wanted = std::max(side, extent / kMaxCellsPerAxis);
-        h = wanted > 0 && std::isfinite(wanted) ? std::exp2(std::ceil(std::log2(wanted))) : 1;
+        h = wanted > 0 && std::isfinite(wanted) ? wanted : 1;
         origin = box.min - P3(h, h, h);
         for (int k = 0; k < 3; ++k) n[k] = int(std::floor((box.max[k] - box.min[k]) / h)) + 3;
     }
