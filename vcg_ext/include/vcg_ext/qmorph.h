@@ -229,14 +229,21 @@ public:
         return std::min(L, kMaxAutoDiagonalFraction * box.Diag());
     }
 
-    // The length of the front (selected edges, each counted once).
+    // The length of the front (selected edges, each counted once). Each face's selected edges are
+    // added shortest first, so a flipped copy of the mesh (its edges at other indices) gives the same
+    // bits: the automatic length, and the re-meshing's grid of cells with it, must not depend on the
+    // orientation.
     static double FrontLength(const MeshType &m)
     {
         double twice = 0;  // an edge is selected on both its faces
-        for (const FaceType &f : m.face)
-            if (!f.IsD())
-                for (int k = 0; k < 3; ++k)
-                    if (f.IsFaceEdgeS(k)) twice += vcg::Distance(vcg::Point3d::Construct(f.cP0(k)), vcg::Point3d::Construct(f.cP1(k)));
+        for (const FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            double lengths[3] = {0, 0, 0};  // an unselected edge adds an exact 0
+            for (int k = 0; k < 3; ++k)
+                if (f.IsFaceEdgeS(k)) lengths[k] = vcg::Distance(vcg::Point3d::Construct(f.cP0(k)), vcg::Point3d::Construct(f.cP1(k)));
+            std::sort(lengths, lengths + 3);
+            for (double l : lengths) twice += l;
+        }
         return twice / 2;
     }
 
@@ -253,11 +260,18 @@ public:
         return "";
     }
 
+    // The area, each face's from its corners in memory order (whichever corner a face starts at and
+    // whichever way it turns, the same bits: see FrontLength).
     static double SurfaceArea(const MeshType &m)
     {
         double area = 0;
-        for (const FaceType &f : m.face)
-            if (!f.IsD()) area += vcg::DoubleArea(f) / 2;
+        for (const FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            const VertexType *c[3] = {f.cV(0), f.cV(1), f.cV(2)};
+            std::sort(c, c + 3);
+            const vcg::Point3d a = vcg::Point3d::Construct(c[0]->cP());
+            area += ((vcg::Point3d::Construct(c[1]->cP()) - a) ^ (vcg::Point3d::Construct(c[2]->cP()) - a)).Norm() / 2;
+        }
         return area;
     }
 

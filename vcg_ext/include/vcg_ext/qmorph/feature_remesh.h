@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -40,11 +41,13 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <vcg_ext/common/canonical_faces.h>
+#include <vcg_ext/common/coloured_sweep.h>
 #include <vcg_ext/common/edge_flip.h>
 #include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/common/face_face_adjacency.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/parallel.h>
+#include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/common/segment_grid.h>
 #include <vcg_ext/qmorph/facing_features.h>
 #include <vcg_ext/qmorph/short_edge_collapse.h>
@@ -115,13 +118,13 @@ public:
                 char step[48];
                 std::snprintf(step, sizeof step, "collapses (%d%% of the vertices)", int(100 * done));
                 progress(kCollapseStart + done * (kFlipStart - kCollapseStart), step);
-            });
+            }, threads);
             progress(kFlipStart, "flips");
             st.flips += ValenceFlips<MeshType>::Do(m, surface, kSurfaceDistance * L);
             progress(kRelaxStart, "relaxation");
             vcg::tri::UpdateTopology<MeshType>::VertexFace(m);  // the flips kept face-face adjacency only
             const std::vector<char> fixed = FeatureVertices(m);
-            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed, threads);
+            for (int k = 0; k < kRelaxSweeps; ++k) Relax(m, surface, fixed, L, threads);
         }
         if (cb) cb(progressTo, "Q-Morph: re-meshing, feature strips");
         st.facingSplits = FacingFeatures<MeshType>::Do(m, L);
@@ -210,50 +213,89 @@ private:
     // Tangential relaxation (Botsch-Kobbelt): each vertex off the features moves toward the area-
     // weighted centroid of its star, in the tangent plane, then onto the input surface. A move is
     // kept only when no face of the star turns over, against the input surface's normal under the
-    // new place or against its own normal before, and the star's worst triangle stays fair. Needs
+    // new place or against its own normal before, the star's worst triangle stays fair, and the star
+    // stays within kSurfaceDistance L of the old place (a point of the input). Needs
     // vertex-face adjacency; `fixed`: FeatureVertices (both unchanged by it: it only moves vertices).
-    static void Relax(MeshType &m, InputSurface<MeshType> &surface, const std::vector<char> &fixed, int threads)
+    // On `threads` threads, the same moves with any number (ColouredSweep, the collapse pass's
+    // cells): a vertex moves in its zone when its neighbours are in it too.
+    static void Relax(MeshType &m, InputSurface<MeshType> &surface, const std::vector<char> &fixed, double L, int threads)
     {
         const std::vector<const FaceType *> underStart = InputUnderVertices(m, surface, fixed, threads);
+        std::vector<int> zone;
+        ColouredSweep<MeshType>::template Run<RelaxScratch>(
+            m, ShortEdgeCollapse<MeshType>::kCellLengths * L, threads, zone,
+            [&](size_t vi, int z, RelaxScratch &scratch) { return RelaxVertex(m, surface, fixed, underStart, zone, L, vi, z, scratch); },
+            [](double) {});
+    }
+
+    // Distance from p to face f, its corners taken in index order: the same arithmetic whichever
+    // way the face runs (a consistently flipped copy of the input is re-meshed into the same mesh).
+    static double DistanceToTriangle(const P3 &p, const FaceType &f)
+    {
+        const VertexType *c[3] = {f.cV(0), f.cV(1), f.cV(2)};
+        std::sort(c, c + 3, std::less<const VertexType *>());
+        return PointTriangleDistance(p, Pos(c[0]), Pos(c[1]), Pos(c[2]));
+    }
+
+    struct RelaxScratch {
         std::vector<FaceType *> star;
         std::vector<int> corner;
         std::vector<CoordType> normalsBefore;
-        for (VertexType &v : m.vert) {
-            if (v.IsD() || fixed[vcg::tri::Index(m, &v)]) continue;
-            vcg::face::VFStarVF<FaceType>(&v, star, corner);
-            if (star.size() < 3) continue;
-            CoordType centroid(0, 0, 0);
-            ScalarType area = 0;
-            for (FaceType *f : star) {
-                const ScalarType a = vcg::DoubleArea(*f);
-                centroid += vcg::Barycenter(*f) * a;
-                area += a;
-            }
-            if (!(area > 0)) continue;
-            CoordType onSurface;
-            const FaceType *under = underStart[vcg::tri::Index(m, &v)];
-            if (!under) continue;
-            const CoordType n = surface.Normal(under);
-            CoordType move = centroid / area - v.cP();
-            move -= n * (move * n);
-            const FaceType *target = surface.Closest(CoordType(v.cP() + move), onSurface);
-            if (!target) continue;
-            const CoordType old = v.cP();
-            double worstBefore = 1, worstAfter = 1;
-            normalsBefore.clear();
-            for (FaceType *f : star) {
-                worstBefore = std::min(worstBefore, double(vcg::Quality(f->cP(0), f->cP(1), f->cP(2))));
-                normalsBefore.push_back(vcg::TriangleNormal(*f));
-            }
-            v.P() = onSurface;
-            bool ok = true;
-            for (size_t i = 0; i < star.size() && ok; ++i) {
-                const CoordType N = vcg::TriangleNormal(*star[i]);
-                ok = N * surface.Normal(target) > 0 && N * normalsBefore[i] > 0;
-                worstAfter = std::min(worstAfter, double(vcg::Quality(star[i]->cP(0), star[i]->cP(1), star[i]->cP(2))));
-            }
-            if (!ok || worstAfter < std::min(worstBefore, kMinRelaxQuality)) v.P() = old;
+    };
+
+    // One vertex of Relax (0), or ColouredSweep::kLater when in zone z (>= 0) it or a neighbour is
+    // not in the zone (another thread may be moving it).
+    static int RelaxVertex(MeshType &m, InputSurface<MeshType> &surface, const std::vector<char> &fixed,
+                           const std::vector<const FaceType *> &underStart, const std::vector<int> &zone, double L, size_t vi,
+                           int z, RelaxScratch &scratch)
+    {
+        if (z >= 0 && zone[vi] != z) return zone[vi] == ColouredSweep<MeshType>::kDeletedVertex ? 0 : ColouredSweep<MeshType>::kLater;
+        VertexType &v = m.vert[vi];
+        if (v.IsD() || fixed[vi]) return 0;
+        std::vector<FaceType *> &star = scratch.star;
+        vcg::face::VFStarVF<FaceType>(&v, star, scratch.corner);
+        if (z >= 0)
+            for (FaceType *f : star)
+                for (int k = 0; k < 3; ++k)
+                    if (zone[vcg::tri::Index(m, f->cV(k))] != z) return ColouredSweep<MeshType>::kLater;
+        if (star.size() < 3) return 0;
+        CoordType centroid(0, 0, 0);
+        ScalarType area = 0;
+        for (FaceType *f : star) {
+            const ScalarType a = vcg::DoubleArea(*f);
+            centroid += vcg::Barycenter(*f) * a;
+            area += a;
         }
+        if (!(area > 0)) return 0;
+        CoordType onSurface;
+        const FaceType *under = underStart[vi];
+        if (!under) return 0;
+        const CoordType n = surface.Normal(under);
+        CoordType move = centroid / area - v.cP();
+        move -= n * (move * n);
+        const FaceType *target = surface.Closest(CoordType(v.cP() + move), onSurface);
+        if (!target) return 0;
+        const CoordType old = v.cP();
+        double worstBefore = 1, worstAfter = 1;
+        std::vector<CoordType> &normalsBefore = scratch.normalsBefore;
+        normalsBefore.clear();
+        for (FaceType *f : star) {
+            worstBefore = std::min(worstBefore, double(vcg::Quality(f->cP(0), f->cP(1), f->cP(2))));
+            normalsBefore.push_back(vcg::TriangleNormal(*f));
+        }
+        v.P() = onSurface;
+        bool ok = true;
+        double nearestToOld = std::numeric_limits<double>::max();
+        for (size_t i = 0; i < star.size() && ok; ++i) {
+            const CoordType N = vcg::TriangleNormal(*star[i]);
+            ok = N * surface.Normal(target) > 0 && N * normalsBefore[i] > 0;
+            worstAfter = std::min(worstAfter, double(vcg::Quality(star[i]->cP(0), star[i]->cP(1), star[i]->cP(2))));
+            nearestToOld = std::min(nearestToOld, DistanceToTriangle(P3::Construct(old), *star[i]));
+        }
+        // the old place is on the input: the star must stay near it, as a collapse's must stay near
+        // the removed vertex (a vertex at a spike's tip slid down the spike, cutting the tip off)
+        if (!ok || worstAfter < std::min(worstBefore, kMinRelaxQuality) || nearestToOld > kSurfaceDistance * L) v.P() = old;
+        return 0;
     }
 
     // The last check: the relaxation judges a star against the input under its vertex, and vcglib's

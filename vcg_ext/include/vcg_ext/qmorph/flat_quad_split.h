@@ -8,6 +8,9 @@
 // of the area stays within kMaxTriangleArea (the output stays quad-dominant: issue 11 asks for at
 // least 99.5% of the area in quads).
 //
+// A dart, a quad with a corner reflex in its own plane (a bent quad can face the input at every
+// corner and still be one), is split the same way from that corner, wherever it is.
+//
 // Orientation: the quads are visited in the order of their scaled Jacobians, ties in polygon order,
 // and every test reads the corners' positions only: a consistently flipped mesh gets the same splits.
 #ifndef VCG_EXT_QMORPH_FLAT_QUAD_SPLIT_H
@@ -53,7 +56,9 @@ public:
             }
             P3 q[4];
             pg.Points(face, position, q);
-            const double jacobian = OutputPolygons::QuadJacobian(q, surface);
+            // a dart (a corner reflex in the quad's own plane) may still face the input at every
+            // corner when the quad is bent: its own scaled Jacobian ranks it
+            const double jacobian = std::min(OutputPolygons::QuadJacobian(q, surface), ScaledJacobian(q));
             if (jacobian < kPoor) poor.push_back({jacobian, face});
         }
         std::sort(poor.begin(), poor.end());
@@ -62,12 +67,15 @@ public:
             const int face = candidate.second;
             P3 q[4];
             pg.Points(face, position, q);
-            const int c = FlatCorner(q);
+            const int reflex = ReflexCorner(q);
+            const int c = reflex >= 0 ? reflex : FlatCorner(q);
             if (c < 0) continue;
             const int v = pg.corners[face][c];
-            if (!pg.NeverMoves(v, position(v), surface, creaseAngleDeg)) continue;
+            // a dart is split from its reflex corner wherever it is (any two triangles facing the
+            // input are better than a quad no smoothing made convex)
+            if (reflex < 0 && !pg.NeverMoves(v, position(v), surface, creaseAngleDeg)) continue;
             const P3 t0[3] = {q[c], q[(c + 1) % 4], q[(c + 2) % 4]}, t1[3] = {q[c], q[(c + 2) % 4], q[(c + 3) % 4]};
-            if (MinAngle(t0) < kMinTriangleAngle || MinAngle(t1) < kMinTriangleAngle) continue;
+            if (reflex < 0 && (MinAngle(t0) < kMinTriangleAngle || MinAngle(t1) < kMinTriangleAngle)) continue;
             if (!OutputPolygons::FacesInput(t0, 3, surface) || !OutputPolygons::FacesInput(t1, 3, surface)) continue;
             const double a = pg.VectorArea(face, position).Norm() / 2;
             if (triangleArea + a > kMaxTriangleArea * area) break;
@@ -100,6 +108,23 @@ private:
             if (angle >= widest) widest = angle, flat = k;
         }
         return flat;
+    }
+    // The corner of quad q reflex in its own plane (its corner Jacobian against the quad's vector
+    // area at most 0; the most negative one), or -1 (also for a quad of zero area).
+    static int ReflexCorner(const P3 *q)
+    {
+        const P3 a = VectorArea(q, 4);
+        if (!(a.Norm() > 0)) return -1;
+        int reflex = -1;
+        double worst = 0;
+        for (int k = 0; k < 4; ++k) {
+            const P3 e1 = q[(k + 1) % 4] - q[k], e2 = q[(k + 3) % 4] - q[k];
+            const double d = e1.Norm() * e2.Norm() * a.Norm();
+            if (!(d > 0)) continue;
+            const double j = ((e1 ^ e2) * a) / d;
+            if (j <= worst) worst = j, reflex = k;
+        }
+        return reflex;
     }
     static double MinAngle(const P3 *t) { return TriangleMinAngle(t[0], t[1], t[2]) * 180 / M_PI; }  // degrees
 

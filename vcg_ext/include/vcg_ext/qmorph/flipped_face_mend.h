@@ -99,11 +99,14 @@ public:
         const OutputPolygons pg = OutputPolygons::Gather(m);
         auto position = [&](int v) { return P3::Construct(m.vert[v].cP()); };
         auto facesInput = [&](int face) { return pg.FacesInput(face, position, surface); };
-        auto jacobian = [&](int face) {  // of a quad, on the input's normal under it (as reported); 1 for a triangle
+        // of a quad, on the input's normal under it (as reported) and on its own (a bent dart, one
+        // corner reflex in its own plane, can face the input at every corner: man, kept aside);
+        // 1 for a triangle
+        auto jacobian = [&](int face) {
             if (pg.size[face] < 4) return 1.0;
             P3 q[4];
             pg.Points(face, position, q);
-            return OutputPolygons::QuadJacobian(q, surface);
+            return std::min(OutputPolygons::QuadJacobian(q, surface), ScaledJacobian(q));
         };
         auto childrenWouldTurn = [&](int face) {  // in the all-quads split
             P3 q[4];

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -34,6 +35,7 @@
 #include <vcg/space/distance3.h>
 
 #include <vcg_ext/common/face_face_adjacency.h>
+#include <vcg_ext/common/coloured_sweep.h>
 #include <vcg_ext/common/input_surface.h>
 
 namespace vcg_ext {
@@ -79,43 +81,110 @@ public:
     // Worst triangle quality (vcg::Quality, 1 equilateral) a collapse may leave, unless the star
     // was already worse.
     static constexpr double kMinQuality = 0.15;
-    // Vertices between two progress reports (about a second on a big scan's first round).
-    static constexpr size_t kProgressVertices = 1 << 15;
-
+    // Side of the cells the pass is spread over on threads, times L: a zone's margin (a quarter of
+    // it) is then four target lengths, beyond the stars a collapse touches.
+    static constexpr double kCellLengths = 16;
     // One pass over the vertices; features are the selected face-edges (flagged on both sides, a
     // border edge on its one side). Needs face-face adjacency (rebuilt at the end); vertex-face
     // adjacency is rebuilt first.
-    // `progress` (optional) gets the fraction of the vertices visited, every kProgressVertices.
+    // `progress` (optional, called on this thread) gets the fraction of the vertices visited.
     // Returns the number of collapses.
+    //
+    // On `threads` threads, the same mesh with any number (ColouredSweep, cells of kCellLengths L):
+    // a visit reads and changes only faces whose every vertex is in its zone (Pass::VisitVertex),
+    // else the vertex waits for the last visits, on this thread. vcglib's collapse also counts the
+    // mesh's faces and vertices down: those collapses are made one at a time.
     static int Do(MeshType &m, InputSurface<MeshType> &surface, double L, const FeatureOf &featureOf,
-                  const CurveDeviation &toCurves, const std::function<void(double)> &progress = {})
+                  const CurveDeviation &toCurves, const std::function<void(double)> &progress = {}, int threads = 1)
     {
         vcg::tri::RequireVFAdjacency(m);
-        std::vector<char> border(m.vert.size(), 0);
-        for (FaceType &f : m.face)
-            if (!f.IsD())
-                for (int i = 0; i < 3; ++i)
-                    if (f.FFp(i) == &f) border[vcg::tri::Index(m, f.V0(i))] = border[vcg::tri::Index(m, f.V1(i))] = 1;
+        Pass pass(m, surface, L, featureOf, toCurves);
         vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-        const double minLength = kMinLength * L;
-        // Per vertex: whether an edge at it may be shorter than minLength. Every candidate is at
-        // the end of such an edge, so a vertex without one is passed over without building its
-        // ring (most vertices after the first round). Kept true where it is true: a collapse
-        // changes only the edges at the vertex it keeps, whose ends are marked again.
-        std::vector<char> nearShort(m.vert.size(), 0);
-        auto markShort = [&](VertexType *a, VertexType *b) {
-            if (Distance(a, b) < minLength) nearShort[vcg::tri::Index(m, a)] = nearShort[vcg::tri::Index(m, b)] = 1;
-        };
-        for (FaceType &f : m.face)
-            if (!f.IsD())
-                for (int i = 0; i < 3; ++i) markShort(f.V0(i), f.V1(i));
-        int collapses = 0;
-        std::vector<Neighbour> ring;
-        for (size_t vi = 0; vi < m.vert.size(); ++vi) {
-            if (progress && vi % kProgressVertices == 0) progress(double(vi) / double(m.vert.size()));
+        pass.MarkShortEdges();
+
+        const long collapses = ColouredSweep<MeshType>::template Run<std::vector<Neighbour>>(
+            m, kCellLengths * L, threads, pass.zone,
+            [&](size_t vi, int z, std::vector<Neighbour> &ring) {
+                const Visit v = pass.VisitVertex(vi, z, ring);
+                return v == Visit::Later ? ColouredSweep<MeshType>::kLater : v == Visit::Collapsed ? 1 : 0;
+            },
+            [&](double done) {
+                if (progress) progress(done);
+            });
+        FaceFaceAdjacency<MeshType>::Update(m);
+        return int(collapses);
+    }
+
+private:
+
+    enum class Visit { Nothing, Collapsed, Later };
+
+    struct Neighbour {
+        VertexType *v = nullptr;
+        bool feature = false;
+    };
+
+    // The state of one pass, and the visit of one vertex.
+    struct Pass {
+        MeshType &m;
+        InputSurface<MeshType> &surface;
+        const double L, minLength;
+        const FeatureOf &featureOf;
+        const CurveDeviation &toCurves;
+        std::vector<char> border;     // per vertex: on a border edge (never moves)
+        // Per vertex: whether an edge at it may be shorter than minLength. Every candidate is at the
+        // end of such an edge, so a vertex without one is passed over without building its ring
+        // (most vertices after the first round). Kept true where it is true: a collapse changes
+        // only the edges at the vertex it keeps, whose ends are marked again.
+        std::vector<char> nearShort;
+        std::vector<int> zone;        // per vertex: its zone for the colour being visited (ColouredSweep)
+        std::mutex counting;          // vcglib's collapse counts the mesh's faces and vertices down
+
+        Pass(MeshType &m_, InputSurface<MeshType> &s, double L_, const FeatureOf &f, const CurveDeviation &t)
+            : m(m_), surface(s), L(L_), minLength(kMinLength * L_), featureOf(f), toCurves(t), border(m_.vert.size(), 0)
+        {
+            for (FaceType &face : m.face)
+                if (!face.IsD())
+                    for (int i = 0; i < 3; ++i)
+                        if (face.FFp(i) == &face) border[Index(face.V0(i))] = border[Index(face.V1(i))] = 1;
+        }
+
+        size_t Index(const VertexType *v) const { return size_t(vcg::tri::Index(m, v)); }
+
+        void MarkShort(VertexType *a, VertexType *b)
+        {
+            if (Distance(a, b) < minLength) nearShort[Index(a)] = nearShort[Index(b)] = 1;
+        }
+        void MarkShortEdges()
+        {
+            nearShort.assign(m.vert.size(), 0);
+            for (FaceType &f : m.face)
+                if (!f.IsD())
+                    for (int i = 0; i < 3; ++i) MarkShort(f.V0(i), f.V1(i));
+        }
+
+        // Whether v and every neighbour of v are in zone `z` (z < 0: no zones, always).
+        bool StarIn(VertexType *v, int z, std::vector<Neighbour> &scratch) const
+        {
+            if (z < 0) return true;
+            if (zone[Index(v)] != z) return false;
+            Ring(v, scratch);
+            return std::all_of(scratch.begin(), scratch.end(), [&](const Neighbour &n) { return zone[Index(n.v)] == z; });
+        }
+
+        // Visits vertex vi: collapses it into the first candidate that allows it. In zone z (>= 0)
+        // only when every face the collapses could read or change has all its vertices in the
+        // zone: p's star, each candidate's, and the stars of the vertices opposite each edge p-q
+        // (whose vertex-face lists a collapse changes); else Later.
+        Visit VisitVertex(size_t vi, int z, std::vector<Neighbour> &ring)
+        {
+            // nothing of a vertex outside the zone is read: another thread may be changing it
+            if (z >= 0 && zone[vi] != z) return zone[vi] == ColouredSweep<MeshType>::kDeletedVertex ? Visit::Nothing : Visit::Later;
             VertexType *p = &m.vert[vi];
-            if (p->IsD() || border[vi] || !nearShort[vi]) continue;
+            if (p->IsD() || border[vi] || !nearShort[vi]) return Visit::Nothing;
             Ring(p, ring);
+            if (z >= 0 && !std::all_of(ring.begin(), ring.end(), [&](const Neighbour &n) { return zone[Index(n.v)] == z; }))
+                return Visit::Later;
             std::vector<VertexType *> candidates;
             const int features = int(std::count_if(ring.begin(), ring.end(), [](const Neighbour &n) { return n.feature; }));
             if (features == 0) {
@@ -140,24 +209,33 @@ public:
                         if (Distance(p, ends[e]) < minLength && ChainAllows(p, ends[1 - e], ends[e], L, chord, sharp, toCurves))
                             candidates.push_back(ends[e]);
             }
-            for (VertexType *q : candidates)
-                if (TryCollapse(m, surface, p, q, features == 0 && !border[vcg::tri::Index(m, q)] && !OnFeature(q), L)) {
-                    for (vcg::face::VFIterator<FaceType> vfi(q); !vfi.End(); ++vfi) {
-                        markShort(q, vfi.V1());
-                        markShort(q, vfi.V2());
+            if (z >= 0) {
+                std::vector<Neighbour> scratch;
+                for (VertexType *q : candidates) {
+                    if (!StarIn(q, z, scratch)) return Visit::Later;
+                    for (vcg::face::VFIterator<FaceType> vfi(p); !vfi.End(); ++vfi) {
+                        VertexType *opposite = vfi.V1() == q ? vfi.V2() : vfi.V2() == q ? vfi.V1() : nullptr;
+                        if (opposite && !StarIn(opposite, z, scratch)) return Visit::Later;
                     }
-                    ++collapses;
-                    break;
                 }
+            }
+            for (VertexType *q : candidates) {
+                P3 X;
+                if (!Allowed(surface, p, q, features == 0 && !border[Index(q)] && !OnFeature(q), L, X)) continue;
+                {
+                    VertexPair pair(p, q);
+                    std::lock_guard<std::mutex> lock(counting);
+                    Collapser::Do(m, pair, CoordType::Construct(X), true);
+                }
+                FlagFeaturesOnBothSides(q);
+                for (vcg::face::VFIterator<FaceType> vfi(q); !vfi.End(); ++vfi) {
+                    MarkShort(q, vfi.V1());
+                    MarkShort(q, vfi.V2());
+                }
+                return Visit::Collapsed;
+            }
+            return Visit::Nothing;
         }
-        FaceFaceAdjacency<MeshType>::Update(m);
-        return collapses;
-    }
-
-private:
-    struct Neighbour {
-        VertexType *v = nullptr;
-        bool feature = false;
     };
 
     static P3 Pos(const VertexType *v) { return P3::Construct(v->cP()); }
@@ -259,14 +337,15 @@ private:
         return true;
     }
 
-    // Removes p into q when every triangle that changes stays right against the input surface. The
-    // merged vertex goes to the edge's midpoint (on the input) when q is free too, else stays at q.
-    // The tests in the plane first: the closest-point searches are most of a collapse's cost.
-    static bool TryCollapse(MeshType &m, InputSurface<MeshType> &surface, VertexType *p, VertexType *q, bool qFree, double L)
+    // Whether p may go into q: every triangle that changes stays right against the input surface.
+    // The merged vertex (`X`) goes to the edge's midpoint (on the input) when q is free too, else
+    // stays at q. Only reads the mesh. The tests in the plane first: the closest-point searches are
+    // most of a collapse's cost.
+    static bool Allowed(InputSurface<MeshType> &surface, VertexType *p, VertexType *q, bool qFree, double L, P3 &X)
     {
         VertexPair pair(p, q);
         if (!Collapser::LinkConditions(pair)) return false;
-        P3 X = Pos(q);
+        X = Pos(q);
         if (qFree) {
             CoordType onSurface;
             if (!surface.Closest(CoordType::Construct((Pos(p) + Pos(q)) * 0.5), onSurface)) return false;
@@ -280,10 +359,7 @@ private:
         }
         if (worstAfter < std::min(worstBefore, kMinQuality)) return false;
         if (std::max(nearestToP, nearestToQ) > kSurfaceDistance * L) return false;
-        if (!StarOnInput(surface, p, q, X, L) || (qFree && !StarOnInput(surface, q, p, X, L))) return false;
-        Collapser::Do(m, pair, CoordType::Construct(X), true);
-        FlagFeaturesOnBothSides(q);
-        return true;
+        return StarOnInput(surface, p, q, X, L) && (!qFree || StarOnInput(surface, q, p, X, L));
     }
 
     // A feature edge merged with a plain one (the triangle a-p-q of a chain collapse, whose edge a-q
