@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "test_mesh.h"
+#include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/algorithms/update/topology.h>
 #include <vcg_ext/common/polygon_geometry.h>
 #include <vcg_ext/qmorph/all_quads.h>
@@ -170,4 +172,33 @@ TEST(AllQuads, AQuarterTurnedOverByTheCentroidGetsAnotherCentre)
     const int centre = int(m.vert.size()) - 1;
     EXPECT_EQ(m.vert[centre].P()[2], 0);
     EXPECT_LT(m.vert[centre].P()[0] + m.vert[centre].P()[1], 4);
+}
+
+// A part thinner than the face: the quad A(0,0) B(2,0) C(2,2) D(0,2) at z = 0 (facing +z) lies on the
+// eaves of a roof (the input facing up: z = 0.3 (1 - |x - 1|)) whose underside, a strip at z = 0.25
+// facing down, is nearer the quad's straight centre (1, 1, 0) than the roof is (0.25 against
+// 0.287). The centre goes onto the roof, the sheet the quad faces, not left between the sheets.
+TEST(AllQuads, ACentreNearerTheSheetBehindGoesOntoTheSheetTheFaceFaces)
+{
+    TMesh input, m;
+    const double kRidge = 0.3, kUnderside = 0.25, kStrip = 0.15;
+    Build(input,
+          {P3(0, -1, 0), P3(1, -1, kRidge), P3(2, -1, 0), P3(0, 3, 0), P3(1, 3, kRidge), P3(2, 3, 0),  // the roof
+           P3(1 - kStrip, -1, kUnderside), P3(1 + kStrip, -1, kUnderside), P3(1 + kStrip, 3, kUnderside),
+           P3(1 - kStrip, 3, kUnderside)},  // its underside
+          {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {6, 8, 7}, {6, 9, 8}});
+    vcg::tri::UpdateNormal<TMesh>::PerFaceNormalized(input);
+    ASSERT_GT(input.face[0].N()[2], 0);
+    ASSERT_LT(input.face[4].N()[2], 0);
+    vcg_ext::InputSurface<TMesh> surface(input);
+    Build(m, {P3(0, 0, 0), P3(2, 0, 0), P3(2, 2, 0), P3(0, 2, 0)}, {{0, 1, 2}, {0, 2, 3}});
+    m.face[0].SetF(2);
+    m.face[1].SetF(0);
+    vcg::tri::UpdateTopology<TMesh>::FaceFace(m);
+
+    EXPECT_EQ(AllQuads::Split(m, surface, 60).quads, 4);
+    const P3 centre = m.vert.back().P();  // the last new point
+    EXPECT_NEAR(centre[1], 1, 1e-6);
+    EXPECT_NEAR(centre[2], kRidge * (1 - std::abs(centre[0] - 1)), 1e-5) << "the centre is not on the roof";
+    EXPECT_GT(centre[2], kUnderside);
 }

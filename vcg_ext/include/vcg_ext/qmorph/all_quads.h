@@ -99,7 +99,7 @@ public:
             P3 mid = (pos[a] + pos[b]) * 0.5;
             straight.push_back(mid);
             const bool sharp = side[1] < 0 || normal[side[0]] * normal[side[1]] < creaseCos;
-            if (!sharp && !selected.count(key)) mid = OnSurface(surface, mid, normal[side[0]]);
+            if (!sharp && !selected.count(key)) mid = OnSurface(surface, mid, normal[side[0]], kReachOfSize * vcg::Distance(pos[a], pos[b]));
             midpoint[key] = int(pos.size());
             pos.push_back(mid);
         }
@@ -115,7 +115,7 @@ public:
             centre /= double(p.size);
             const int c = int(pos.size());
             straight.push_back(centre);
-            pos.push_back(OnSurface(surface, centre, normal[i]));
+            pos.push_back(OnSurface(surface, centre, normal[i], kReachOfSize * Size(pos, p)));
             for (int k : byIndex) {  // the same quads in the same order, whichever way p runs
                 const int prev = p.v[(k + p.size - 1) % p.size], here = p.v[k], next = p.v[(k + 1) % p.size];
                 quads.push_back({{here, midpoint[EdgeKey(here, next)], c, midpoint[EdgeKey(prev, here)]}, p.quality});
@@ -195,6 +195,10 @@ private:
     static constexpr double kCentreSteps[4] = {0.25, 0.5, -0.25, -0.5};
     static constexpr int kCentreRounds = 4;
     static constexpr double kMinGain = 1e-3;
+    // How far a new point may go to the input facing its face, as a fraction of the face's size
+    // (its edge for a midpoint, its longest side for a centre): half, the most a midpoint's chord
+    // can be off a sheet that faces the right way.
+    static constexpr double kReachOfSize = 0.5;
     // A new quad turned over (the quality report's flipped face), below any scaled Jacobian.
     static constexpr double kTurnedOver = -2;
 
@@ -236,10 +240,10 @@ private:
         const P3 normal = PolygonNormal(pos, p);
         P3 centre(0, 0, 0);
         for (int k : byIndex) centre += pos[p.v[k]];
-        centre = OnSurface(surface, centre / double(p.size), normal);
+        centre = OnSurface(surface, centre / double(p.size), normal, kReachOfSize * Size(pos, p));
         auto midpoint = [&](int a, int b) {
             const P3 mid = (pos[a] + pos[b]) * 0.5;
-            return selected.count(EdgeKey(a, b)) ? mid : OnSurface(surface, mid, normal);
+            return selected.count(EdgeKey(a, b)) ? mid : OnSurface(surface, mid, normal, kReachOfSize * vcg::Distance(pos[a], pos[b]));
         };
         double worst = 1;
         for (int k : byIndex) {
@@ -435,6 +439,7 @@ private:
         const Polygon &p = ch.polygons[i];
         P3 &c = pos[ch.quads[ch.firstQuad[i]].v[2]];
         const P3 normal = PolygonNormal(pos, p);
+        const double reach = kReachOfSize * Size(pos, p);
         P3 best = c, base = centre;  // base: the best place's straight place, where the next steps start
         double bestWorst = WorstQuadOf(ch, i, pos, surface) + kMinGain, scale = 1;
         for (int round = 0; round < kCentreRounds; ++round, scale /= 2) {
@@ -442,7 +447,7 @@ private:
             for (int k : CornersByIndex(p))
                 for (double step : kCentreSteps) {
                     const P3 place = from + (pos[p.v[k]] - centre) * (step * scale);
-                    for (const P3 &candidate : {place, OnSurface(surface, place, normal)}) {
+                    for (const P3 &candidate : {place, OnSurface(surface, place, normal, reach)}) {
                         c = candidate;
                         const double worst = WorstQuadOf(ch, i, pos, surface);
                         if (worst > bestWorst) {
@@ -456,13 +461,25 @@ private:
         c = best;
     }
 
-    // p moved onto the input surface, unless the input there faces away from `normal` (a thin part).
-    static P3 OnSurface(InputSurface<MeshType> &surface, const P3 &p, const P3 &normal)
+    // p moved onto the input surface. Where the input closest to p faces away from `normal` (a part
+    // thinner than the face: p is nearer the sheet behind), onto the nearest input facing `normal`
+    // within `reach` (left in place if there is none): a point left between the sheets makes its
+    // quads' centroids nearer the sheet behind, so they face away from the input under them.
+    static P3 OnSurface(InputSurface<MeshType> &surface, const P3 &p, const P3 &normal, double reach)
     {
         CoordType closest;
         const FaceType *f = surface.Closest(CoordType::Construct(p), closest);
-        if (!f || P3::Construct(surface.Normal(f)) * normal <= 0) return p;
-        return P3::Construct(closest);
+        if (!f) return p;
+        if (P3::Construct(surface.Normal(f)) * normal > 0) return P3::Construct(closest);
+        return surface.ClosestFacing(CoordType::Construct(p), normal, closest, reach) ? P3::Construct(closest) : p;
+    }
+
+    // A polygon's size: its longest side.
+    static double Size(const std::vector<P3> &pos, const Polygon &p)
+    {
+        double longest = 0;
+        for (int k = 0; k < p.size; ++k) longest = std::max(longest, vcg::Distance(pos[p.v[k]], pos[p.v[(k + 1) % p.size]]));
+        return longest;
     }
 };
 
