@@ -179,7 +179,7 @@ const TableDef &Def(int t)
           "of which re-meshing (s)", "total (s)", "us / face", "peak bytes / face", "quad % (area)", "closed, Euler kept", "flipped",
           "longest progress gap (s)", "longest step without news (s)"},
          "Each row its own process. threads: Q-Morph's pool (QMorph::Params::threads: its patches, and the re-meshing's "
-         "closest-point searches before each relaxation sweep; the other stages run on one thread). Times: wall "
+         "collapses and relaxation, cell by cell in colours; the other stages run on one thread). Times: wall "
          "clock of the core calls (no file IO), default parameters. peak bytes / face: the process's "
          "VmHWM over the four stages / input faces (the process also holds a copy of the input). longest progress gap: "
          "the longest time between two progress callbacks inside one of the four core calls (what the "
