@@ -26,6 +26,24 @@ bool LoadElephantWithRegionFronts(TMesh &m)
     return SelectRegionBoundaries(m) > 0;
 }
 
+// Q-Morph with p on a copy of base per thread count: every run writes the bytes of the first.
+// Returns the runs' results, in the order of `threadCounts`.
+std::vector<QM::Result> ExpectSameBytesWithEachThreadCount(const TMesh &base, QM::Params p, const std::vector<int> &threadCounts)
+{
+    std::vector<QM::Result> results;
+    std::vector<unsigned char> reference;
+    for (int threads : threadCounts) {
+        TMesh m;
+        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, const_cast<TMesh &>(base));
+        p.threads = threads;
+        results.push_back(QM::Apply(m, p));
+        EXPECT_EQ(results.back().error, "");
+        if (results.size() == 1) reference = MeshBytes(m);
+        else EXPECT_TRUE(MeshBytes(m) == reference) << threads << " threads changed the output";
+    }
+    return results;
+}
+
 }  // namespace
 
 TEST(Parallel, MergesInIndexOrderOnTheCallingThreadWhateverTheStartOrder)
@@ -89,24 +107,9 @@ TEST(Parallel, QMorphWritesTheSameBytesWithOneThreadAndWithSeveral)
 {
     TMesh base;
     ASSERT_TRUE(LoadElephantWithRegionFronts(base));
-    std::vector<unsigned char> reference;
-    int patches = 0;
-    for (int threads : {1, 2, 3}) {
-        TMesh m;
-        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, base);
-        QM::Params p;
-        p.threads = threads;
-        QM::Result r = QM::Apply(m, p);
-        ASSERT_EQ(r.error, "");
-        if (threads == 1) {
-            reference = MeshBytes(m);
-            patches = r.patches;
-            continue;
-        }
-        EXPECT_EQ(r.patches, patches);
-        EXPECT_TRUE(MeshBytes(m) == reference) << threads << " threads changed the output";
-    }
-    EXPECT_GT(patches, 20) << "the case needs many patches to schedule";
+    const std::vector<QM::Result> r = ExpectSameBytesWithEachThreadCount(base, QM::Params(), {1, 2, 3});
+    for (const QM::Result &ri : r) EXPECT_EQ(ri.patches, r[0].patches);
+    EXPECT_GT(r[0].patches, 20) << "the case needs many patches to schedule";
 }
 
 TEST(Parallel, QMorphReMeshedWritesTheSameBytesWithOneThreadAndWithTwo)
@@ -115,19 +118,10 @@ TEST(Parallel, QMorphReMeshedWritesTheSameBytesWithOneThreadAndWithTwo)
     ASSERT_TRUE(LoadOff(base, MeshDir() + "/fandisk.off"));
     ASSERT_GT(SelectCreases(base, 40), 100);
     vcg::tri::UpdateBounding<TMesh>::Box(base);
-    std::vector<unsigned char> reference;
-    for (int threads : {1, 2}) {
-        TMesh m;
-        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, base);
-        QM::Params p;
-        p.threads = threads;
-        p.targetEdgeLength = 0.02 * base.bbox.Diag();  // the patches judged against the shared input surface
-        p.remeshIterations = 2;
-        QM::Result r = QM::Apply(m, p);
-        ASSERT_EQ(r.error, "");
-        if (threads == 1) reference = MeshBytes(m);
-        else EXPECT_TRUE(MeshBytes(m) == reference) << "two threads changed the re-meshed output";
-    }
+    QM::Params p;
+    p.targetEdgeLength = 0.02 * base.bbox.Diag();  // the patches judged against the shared input surface
+    p.remeshIterations = 2;
+    ExpectSameBytesWithEachThreadCount(base, p, {1, 2});
 }
 
 // The re-meshing's collapse pass spread over many cells of ColouredCells (elephant at 0.5% of its
@@ -138,24 +132,10 @@ TEST(Parallel, ReMeshingSpreadOverManyCellsWritesTheSameBytes)
     TMesh base;
     ASSERT_TRUE(LoadElephantWithRegionFronts(base));
     vcg::tri::UpdateBounding<TMesh>::Box(base);
-    std::vector<unsigned char> reference;
-    int collapses = 0;
-    for (int threads : {1, 2, 3}) {
-        TMesh m;
-        vcg::tri::Append<TMesh, TMesh>::MeshCopy(m, base);
-        QM::Params p;
-        p.threads = threads;
-        p.targetEdgeLength = 0.005 * base.bbox.Diag();
-        p.remeshIterations = 2;
-        QM::Result r = QM::Apply(m, p);
-        ASSERT_EQ(r.error, "");
-        if (threads == 1) {
-            reference = MeshBytes(m);
-            collapses = r.remesh.collapses;
-            continue;
-        }
-        EXPECT_EQ(r.remesh.collapses, collapses);
-        EXPECT_TRUE(MeshBytes(m) == reference) << threads << " threads changed the re-meshed output";
-    }
-    EXPECT_GT(collapses, 1000) << "the case needs collapses in many cells";
+    QM::Params p;
+    p.targetEdgeLength = 0.005 * base.bbox.Diag();
+    p.remeshIterations = 2;
+    const std::vector<QM::Result> r = ExpectSameBytesWithEachThreadCount(base, p, {1, 2, 3});
+    for (const QM::Result &ri : r) EXPECT_EQ(ri.remesh.collapses, r[0].remesh.collapses);
+    EXPECT_GT(r[0].remesh.collapses, 1000) << "the case needs collapses in many cells";
 }
