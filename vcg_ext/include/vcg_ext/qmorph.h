@@ -11,6 +11,7 @@
 #define VCG_EXT_QMORPH_H
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <climits>
@@ -29,6 +30,7 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/flag.h>
 
+#include <vcg_ext/common/face_corners.h>
 #include <vcg_ext/common/format.h>
 #include <vcg_ext/common/input_surface.h>
 #include <vcg_ext/common/live_box.h>
@@ -267,8 +269,7 @@ public:
         double area = 0;
         for (const FaceType &f : m.face) {
             if (f.IsD()) continue;
-            const VertexType *c[3] = {f.cV(0), f.cV(1), f.cV(2)};
-            std::sort(c, c + 3);
+            const std::array<const VertexType *, 3> c = FaceCorners<MeshType>::InMemoryOrder(f);
             const vcg::Point3d a = vcg::Point3d::Construct(c[0]->cP());
             area += ((vcg::Point3d::Construct(c[1]->cP()) - a) ^ (vcg::Point3d::Construct(c[2]->cP()) - a)).Norm() / 2;
         }

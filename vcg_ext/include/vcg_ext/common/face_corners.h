@@ -1,10 +1,12 @@
 // Reordering the corners of a vcg face in place, so that it is the same triangle read from another
 // corner or the other way round: its vertices move, and with them what is stored per edge (border,
 // face-edge selection and faux bits) and per corner (wedge texture coordinates). vcg's own FlipFace
-// and SwapEdge carry the faux bits only. Adjacency (FF, VF) is the caller's to rebuild.
+// and SwapEdge carry the faux bits only. Adjacency (FF, VF) is the caller's to rebuild. Also a
+// face's corners in an order that does not depend on how it is read.
 #ifndef VCG_EXT_COMMON_FACE_CORNERS_H
 #define VCG_EXT_COMMON_FACE_CORNERS_H
 
+#include <algorithm>
 #include <array>
 
 #include <vcg/complex/complex.h>
@@ -16,7 +18,18 @@ class FaceCorners
 {
 public:
     typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
     typedef std::array<char, 3> Order;
+
+    // The face's vertices in memory order (lowest address first): the same for every reading of the
+    // triangle (another first corner, the other way round), so arithmetic on them gives the same
+    // bits on a consistently flipped copy of a mesh.
+    static std::array<const VertexType *, 3> InMemoryOrder(const FaceType &f)
+    {
+        std::array<const VertexType *, 3> c{{f.cV(0), f.cV(1), f.cV(2)}};
+        std::sort(c.begin(), c.end());
+        return c;
+    }
 
     // The face's corner k becomes its old corner from[k] (a permutation of 0, 1, 2).
     static void Reorder(MeshType &m, FaceType &f, const Order &from)

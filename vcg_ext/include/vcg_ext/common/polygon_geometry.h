@@ -46,17 +46,23 @@ inline double TriangleMinAngle(const Vec3d &a, const Vec3d &b, const Vec3d &c)
     return std::min({AngleBetween(b - a, c - a), AngleBetween(a - b, c - b), AngleBetween(a - c, b - c)});
 }
 
-// Scaled Jacobian of the quad q[0..3] against the unit normal n: the least over the corners of
-// ((e1 x e2) . n) / (|e1| |e2|), e1 and e2 the corner's two sides; 1 for a square, <= 0 for a
-// reflex, folded or (against n) flipped quad, -1 when a side has zero length.
+// Scaled Jacobian of corner k of the quad q[0..3] against the unit normal n: ((e1 x e2) . n) /
+// (|e1| |e2|), e1 and e2 the corner's two sides; <= 0 for a reflex, folded or (against n) flipped
+// corner, -1 when a side has zero length (`degenerate`, optional, then set).
+inline double CornerJacobian(const Vec3d *q, int k, const Vec3d &n, bool *degenerate = nullptr)
+{
+    const Vec3d e1 = q[(k + 1) % 4] - q[k], e2 = q[(k + 3) % 4] - q[k];
+    const double d = e1.Norm() * e2.Norm();
+    if (degenerate) *degenerate = !(d > 0);
+    return d > 0 ? ((e1 ^ e2) * n) / d : -1.0;
+}
+
+// Scaled Jacobian of the quad q[0..3] against the unit normal n: the least of its corners'
+// (CornerJacobian); 1 for a square.
 inline double ScaledJacobian(const Vec3d *q, const Vec3d &n)
 {
     double worst = 1;
-    for (int k = 0; k < 4; ++k) {
-        const Vec3d e1 = q[(k + 1) % 4] - q[k], e2 = q[(k + 3) % 4] - q[k];
-        const double d = e1.Norm() * e2.Norm();
-        worst = std::min(worst, d > 0 ? ((e1 ^ e2) * n) / d : -1.0);
-    }
+    for (int k = 0; k < 4; ++k) worst = std::min(worst, CornerJacobian(q, k, n));
     return worst;
 }
 

@@ -30,7 +30,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <limits>
 #include <vector>
 
@@ -232,8 +231,7 @@ private:
     // way the face runs (a consistently flipped copy of the input is re-meshed into the same mesh).
     static double DistanceToTriangle(const P3 &p, const FaceType &f)
     {
-        const VertexType *c[3] = {f.cV(0), f.cV(1), f.cV(2)};
-        std::sort(c, c + 3, std::less<const VertexType *>());
+        const std::array<const VertexType *, 3> c = FaceCorners<MeshType>::InMemoryOrder(f);
         return PointTriangleDistance(p, Pos(c[0]), Pos(c[1]), Pos(c[2]));
     }
 

@@ -114,15 +114,14 @@ private:
     static int ReflexCorner(const P3 *q)
     {
         const P3 a = VectorArea(q, 4);
-        if (!(a.Norm() > 0)) return -1;
+        const double area = a.Norm();
+        if (!(area > 0)) return -1;
         int reflex = -1;
         double worst = 0;
         for (int k = 0; k < 4; ++k) {
-            const P3 e1 = q[(k + 1) % 4] - q[k], e2 = q[(k + 3) % 4] - q[k];
-            const double d = e1.Norm() * e2.Norm() * a.Norm();
-            if (!(d > 0)) continue;
-            const double j = ((e1 ^ e2) * a) / d;
-            if (j <= worst) worst = j, reflex = k;
+            bool degenerate = false;
+            const double j = CornerJacobian(q, k, a / area, &degenerate);
+            if (!degenerate && j <= worst) worst = j, reflex = k;
         }
         return reflex;
     }
