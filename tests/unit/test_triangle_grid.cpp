@@ -64,7 +64,9 @@ TEST(TriangleGrid, AnswersAreVcglibsGridClosestsToTheLastBit)
                 const TFace *expected = reference.GetClosest(distance, noMarks, q, bound, d, expectedAt);
                 const int got = grid.Closest(q, bound, [](int) { return true; }, at);
                 ASSERT_EQ(got, expected ? int(vcg::tri::Index(m, expected)) : -1);
-                if (expected) EXPECT_EQ(at, expectedAt);
+                if (expected) {
+                    EXPECT_EQ(at, expectedAt);
+                }
                 ++tested;
             }
             // every triangle nearer than a radius a little over the least distance

@@ -13,7 +13,9 @@
 #ifndef VCG_EXT_COMMON_TRIANGLE_GRID_H
 #define VCG_EXT_COMMON_TRIANGLE_GRID_H
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -49,7 +51,7 @@ public:
             start[c] = int(entries.size());
             for (auto l = grid.grid[c]; l != grid.grid[c + 1]; ++l) {
                 const FaceType &f = *l->Elem();
-                entries.push_back({{f.cP(0), f.cP(1), f.cP(2)}, int(vcg::tri::Index(m, f))});
+                entries.push_back(MakeEntry(f.cP(0), f.cP(1), f.cP(2), int(vcg::tri::Index(m, f))));
             }
         }
         start[count] = int(entries.size());
@@ -120,11 +122,33 @@ public:
     }
 
 private:
-    // A triangle as filed in a cell: its corners and its index in the mesh.
+    // A triangle as filed in a cell: its corners, its index in the mesh, and a ball holding it.
+    // The ball passes over most triangles of a cell without the exact test: near a surface every
+    // neighbouring triangle's plane passes near the query point, so the plane bound of
+    // PointFaceDistance lets them through, but their balls are far.
     struct Entry {
         CoordType corner[3];
+        CoordType centre;
+        ScalarType reach;  // every point of the triangle is within `reach` of `centre` (rounded up)
         int face;
     };
+    // Relative slack on the ball test: it may only pass over a triangle the exact test would refuse,
+    // whatever the rounding of the two.
+    static constexpr double kBallSlack = 1e-9;
+
+    static Entry MakeEntry(const CoordType &a, const CoordType &b, const CoordType &c, int face)
+    {
+        Entry e;
+        e.corner[0] = a;
+        e.corner[1] = b;
+        e.corner[2] = c;
+        e.centre = (a + b + c) / ScalarType(3);
+        double reach = 0;
+        for (const CoordType &corner : e.corner) reach = std::max(reach, (P3::Construct(corner) - P3::Construct(e.centre)).Norm());
+        e.reach = std::nextafter(ScalarType(reach * (1 + kBallSlack)), std::numeric_limits<ScalarType>::max());
+        e.face = face;
+        return e;
+    }
 
     vcg::BasicGrid<ScalarType> box;  // GridStaticPtr's geometry: box, cell counts, cell size
     std::vector<int> start;          // per cell (and a sentinel): its first entry
@@ -135,6 +159,8 @@ private:
 
     static bool Nearer(const Entry &e, const CoordType &p, ScalarType &minDist, CoordType &closest)
     {
+        const double beyond = (double(minDist) + double(e.reach)) * (1 + kBallSlack);
+        if ((P3::Construct(p) - P3::Construct(e.centre)).SquaredNorm() > beyond * beyond) return false;
         return PointFaceDistance<FaceType>::Nearer(e.corner, p, minDist, closest);
     }
 };
