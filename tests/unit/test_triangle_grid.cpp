@@ -17,7 +17,7 @@ namespace {
 
 typedef vcg::Point3d D3;
 
-// Points near face centres, just above vertices (several triangles exactly as near: which one is
+// Points near face centres, on the surface (corners, edge midpoints, centres), just above vertices (several triangles exactly as near: which one is
 // kept is the walk's choice), a few edge lengths off the surface (several rings of cells) and
 // outside the grid's box.
 std::vector<P3> QueryPoints(const TMesh &m)
@@ -30,6 +30,10 @@ std::vector<P3> QueryPoints(const TMesh &m)
         points.push_back(P3::Construct((a + b + c) / 3.0 + n * (0.3 * edge)));
         points.push_back(P3::Construct(a + n * (1e-3 * edge)));
         points.push_back(P3::Construct(a - n * (4 * edge) + (c - a) * 0.5));
+        // on the surface: a corner, an edge's midpoint, the centre (as projected nodes are)
+        points.push_back(m.face[f].cP(0));
+        points.push_back(P3::Construct((a + b) / 2.0));
+        points.push_back(P3::Construct((a + b + c) / 3.0));
     }
     const D3 centre = D3::Construct(m.bbox.Center());
     points.push_back(P3::Construct(centre + D3(1, 0.5, 0.25) * m.bbox.Diag()));

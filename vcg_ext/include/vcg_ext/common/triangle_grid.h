@@ -44,6 +44,7 @@ public:
         vcg::GridStaticPtr<FaceType, ScalarType> grid;
         grid.Set(m.face.begin(), m.face.end(), cells);
         box = grid;  // its geometry: box, cell counts, cell size
+        roundingSlack = kRoundingDiagonal * double(box.bbox.Diag());
         const size_t count = size_t(box.siz[0]) * box.siz[1] * box.siz[2];
         start.resize(count + 1);
         entries.reserve(grid.links.size());
@@ -132,9 +133,13 @@ private:
         ScalarType reach;  // every point of the triangle is within `reach` of `centre` (rounded up)
         int face;
     };
-    // Relative slack on the ball test: it may only pass over a triangle the exact test would refuse,
-    // whatever the rounding of the two.
+    // Relative and absolute (times the box's diagonal) slack on the ball test: it may only pass over
+    // a triangle the exact test would refuse, whatever the rounding of the two (distances computed
+    // from coordinates are off by about 1e-16 of the coordinates, not of the distance: a point on
+    // the surface is at distance 0 up to that).
     static constexpr double kBallSlack = 1e-9;
+    static constexpr double kRoundingDiagonal = 1e-12;
+    double roundingSlack = 0;
 
     static Entry MakeEntry(const CoordType &a, const CoordType &b, const CoordType &c, int face)
     {
@@ -157,9 +162,9 @@ private:
     vcg::Box3i AllCells() const { return vcg::Box3i(vcg::Point3i(0, 0, 0), box.siz - vcg::Point3i(1, 1, 1)); }
     size_t CellIndex(int x, int y, int z) const { return size_t(x) + size_t(box.siz[0]) * (size_t(y) + size_t(box.siz[1]) * size_t(z)); }
 
-    static bool Nearer(const Entry &e, const CoordType &p, ScalarType &minDist, CoordType &closest)
+    bool Nearer(const Entry &e, const CoordType &p, ScalarType &minDist, CoordType &closest) const
     {
-        const double beyond = (double(minDist) + double(e.reach)) * (1 + kBallSlack);
+        const double beyond = (double(minDist) + double(e.reach)) * (1 + kBallSlack) + roundingSlack;
         if ((P3::Construct(p) - P3::Construct(e.centre)).SquaredNorm() > beyond * beyond) return false;
         return PointFaceDistance<FaceType>::Nearer(e.corner, p, minDist, closest);
     }
