@@ -17,9 +17,10 @@ namespace {
 
 typedef vcg::Point3d D3;
 
-// Points near face centres, on the surface (corners, edge midpoints, centres), just above vertices (several triangles exactly as near: which one is
-// kept is the walk's choice), a few edge lengths off the surface (several rings of cells) and
-// outside the grid's box.
+// Points near face centres, on the surface (corners, edge midpoints, centres: distances 0 up to
+// rounding), just above vertices (several triangles exactly as near: which one is kept is the
+// walk's choice), a few edge lengths off the surface (several rings of cells) and outside the
+// grid's box.
 std::vector<P3> QueryPoints(const TMesh &m)
 {
     std::vector<P3> points;
