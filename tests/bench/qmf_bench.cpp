@@ -286,7 +286,10 @@ void Usage()
         "  --no-remesh         Q-Morph on the split mesh's own triangles ('Re-mesh first' off)\n"
         "  --scaling NAME      only the scaling run: NAME refined by midpoint steps (--scaling-steps, default 0,1,2:\n"
         "                      1x, 4x, 16x), each with Q-Morph on 1 and 2 threads (--scaling-threads, default 1,2)\n"
-        "  --plot FILE.png     with --scaling: gnuplot PNG of time per face against faces (data in FILE.png.dat)\n");
+        "  --plot FILE.png     with --scaling: gnuplot PNG of time per face against faces (data in FILE.png.dat)\n"
+        "  --timeline          with --scaling: each new progress report (percent, message) with its time since the\n"
+        "                      row's start, on stderr (where a stage's time goes; the stage calls' own\n"
+        "                      'called' / 'returned' lines bound them)\n");
 }
 
 bool FileExists(const std::string &p)
@@ -367,14 +370,15 @@ double MeanEdgeLength(const TMesh &m)
 // indivisible step, which its progress relay covers with repeated reports.
 struct ProgressGaps {
     bool on = false;
-    Clock::time_point last, lastNews;
+    bool timeline = false;  // print each new report with its time since Start (--timeline)
+    Clock::time_point start, last, lastNews;
     double longest = 0, longestSame = 0;
     int lastPercent = -1;
     std::string lastMessage = "start", where, whereSame;  // the callbacks around the longest gaps
     void Start()
     {
         on = true;
-        last = lastNews = Clock::now();
+        start = last = lastNews = Clock::now();
         longest = longestSame = 0;
         lastPercent = -1;
         lastMessage = "start";
@@ -391,6 +395,7 @@ struct ProgressGaps {
         if (percent == lastPercent && message == lastMessage) return;
         const double same = std::chrono::duration<double>(now - lastNews).count();
         if (same > longestSame) { longestSame = same; whereSame = lastMessage + " -> " + message; }
+        if (timeline) std::fprintf(stderr, "%9.3f s %3d%% %s\n", std::chrono::duration<double>(now - start).count(), percent, message);
         lastNews = now;
         lastPercent = percent;
         lastMessage = message;
@@ -403,6 +408,7 @@ struct ProgressGaps {
         last = lastNews = Clock::now();
         lastPercent = -1;
         lastMessage = std::string(stage) + " called";
+        if (timeline) std::fprintf(stderr, "%9.3f s      %s\n", std::chrono::duration<double>(last - start).count(), lastMessage.c_str());
     }
     void Leave(const char *stage) { Tick(-1, (std::string(stage) + " returned").c_str()); }
     void Stop() { on = false; }
@@ -1100,6 +1106,7 @@ int main(int argc, char **argv)
         else if (a == "--scaling-steps") o.scalingSteps = IntList(next());
         else if (a == "--scaling-threads") o.scalingThreads = IntList(next());
         else if (a == "--plot") o.plot = next();
+        else if (a == "--timeline") g_gaps.timeline = true;
         else if (!a.empty() && a[0] == '-') { std::fprintf(stderr, "unknown option %s\n", a.c_str()); Usage(); return 2; }
         else o.names.push_back(a);
     }

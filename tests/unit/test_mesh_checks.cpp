@@ -2,6 +2,7 @@
 
 #include <limits>
 #include <map>
+#include <random>
 
 #include "test_mesh.h"
 #include <vcg_ext/mesh_checks.h>
@@ -63,6 +64,63 @@ TEST(MeshChecks, DegenerateDuplicateAndNaN)
     r = Checks::Inspect(m, false);
     EXPECT_EQ(r.nonFiniteVertices, 1);
     EXPECT_NE(r.FirstProblem(false).find("NaN"), std::string::npos);
+}
+
+TEST(MeshChecks, DuplicateFacesCountedWhateverTheirCornerOrderAndCopies)
+{
+    TMesh cube;
+    MakeCube(cube, 2);  // 48 faces, closed
+    std::vector<P3> v;
+    for (const auto &x : cube.vert) v.push_back(x.cP());
+    std::vector<std::array<int, 3>> f;
+    for (const auto &face : cube.face)
+        f.push_back({int(vcg::tri::Index(cube, face.cV(0))), int(vcg::tri::Index(cube, face.cV(1))), int(vcg::tri::Index(cube, face.cV(2)))});
+    const std::array<int, 3> a = f[0], b = f[5], c = f[7];
+    f.push_back({a[2], a[1], a[0]});  // reversed: 1
+    f.push_back(b);                   // twice more: 2
+    f.push_back({b[1], b[2], b[0]});
+    f.push_back({c[1], c[2], c[0]});  // turned: 1
+    TMesh m;
+    Build(m, v, f);
+    auto r = Checks::Inspect(m);
+    EXPECT_EQ(r.duplicateFaces, 4);
+    EXPECT_EQ(r.degenerateFaces, 0);
+    EXPECT_EQ(r.First(vcg_ext::MeshCheckReport::Basic), vcg_ext::MeshCheckReport::DuplicateFaces);
+    EXPECT_NE(r.FirstProblem(false).find("4 faces are duplicates"), std::string::npos) << r.FirstProblem(false);
+    // a face with a repeated vertex has no lowest edge: the same count by sorting every triple
+    f.push_back({a[0], a[0], a[1]});
+    Build(m, v, f);
+    r = Checks::Inspect(m);
+    EXPECT_EQ(r.duplicateFaces, 4);
+    EXPECT_EQ(r.degenerateFaces, 1);
+    EXPECT_EQ(Checks::Inspect(cube).duplicateFaces, 0);
+}
+
+TEST(MeshChecks, DuplicateFacesAsSortingEveryTripleCountsThem)
+{
+    // random faces over 8 vertices: many duplicates, edges with many faces; 3 of 24 with a
+    // repeated vertex in the second half of the trials
+    std::mt19937 rng(7);
+    std::vector<P3> v;
+    for (int i = 0; i < 8; ++i) v.push_back(P3(float(i % 2), float(i / 2 % 2), float(i / 4)));
+    for (int trial = 0; trial < 200; ++trial) {
+        std::vector<std::array<int, 3>> f;
+        for (int k = 0; k < 24; ++k) {
+            std::array<int, 3> t;
+            do {
+                for (int &x : t) x = int(rng() % 8);
+            } while (trial < 100 && (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]));
+            f.push_back(t);
+        }
+        std::vector<std::array<int, 3>> sorted(f);
+        for (auto &t : sorted) std::sort(t.begin(), t.end());
+        std::sort(sorted.begin(), sorted.end());
+        int expected = 0;
+        for (size_t i = 1; i < sorted.size(); ++i) expected += sorted[i] == sorted[i - 1] ? 1 : 0;
+        TMesh m;
+        Build(m, v, f);
+        EXPECT_EQ(Checks::Inspect(m).duplicateFaces, expected) << "trial " << trial;
+    }
 }
 
 TEST(MeshChecks, EmptyAndPointCloud)

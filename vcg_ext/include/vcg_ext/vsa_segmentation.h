@@ -134,10 +134,11 @@ public:
     // edges or vertices, degenerate or duplicate faces, in MeshCheckReport's order), or "".
     static std::string Check(const MeshType &m, const Params &p, std::string *warning = nullptr)
     {
-        std::string why = p.Validate();
-        if (why.empty()) why = MeshChecks<MeshType>::CheckFacesAndCoordinates(m);
-        if (!why.empty()) return why;
+        const std::string invalid = p.Validate();
+        if (!invalid.empty()) return invalid;
         const MeshCheckReport report = MeshChecks<MeshType>::Inspect(m);
+        const std::string why = report.FacesAndCoordinatesProblem();
+        if (!why.empty()) return why;
         const MeshCheckReport::Problem problem = report.First(MeshCheckReport::ManifoldOriented);
         if (problem == MeshCheckReport::DuplicateVertices || problem == MeshCheckReport::Inconsistent)
             return report.Describe(problem);

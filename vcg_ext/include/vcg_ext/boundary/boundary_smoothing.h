@@ -93,11 +93,10 @@ public:
     static std::string Check(const MeshType &m, const Params &p)
     {
         std::string why = p.Validate();
-        if (why.empty()) why = MeshChecks<MeshType>::CheckFacesAndCoordinates(m);
-        if (why.empty()) {
-            const MeshCheckReport r = MeshChecks<MeshType>::Inspect(m);
-            if (r.duplicateVertices) why = r.Describe(MeshCheckReport::DuplicateVertices);
-        }
+        if (!why.empty()) return why;
+        const MeshCheckReport r = MeshChecks<MeshType>::Inspect(m);
+        why = r.FacesAndCoordinatesProblem();
+        if (why.empty() && r.duplicateVertices) why = r.Describe(MeshCheckReport::DuplicateVertices);
         return why;
     }
 
