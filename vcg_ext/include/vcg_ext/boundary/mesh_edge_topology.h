@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -85,18 +84,20 @@ public:
             if (faceVerts[f][0] >= 0)
                 for (int k = 0; k < 3; ++k) vertFaces[fill[faceVerts[f][k]]++] = f;
 
-        // Edges numbered in the order of their first half-edge (face order).
+        // Edges numbered in the order of their first half-edge (face order): each group is filed at
+        // its first half-edge (distinct keys), read back in half-edge order (a sort of millions of
+        // edges took most of this build).
         const EdgePairing::Groups groups = EdgePairing::Group(faceVerts);
-        std::vector<int> order(groups.Count());
-        std::iota(order.begin(), order.end(), 0);
-        std::sort(order.begin(), order.end(), [&](int x, int y) { return groups.Begin(x)[0] < groups.Begin(y)[0]; });
+        std::vector<int> groupFrom(3 * size_t(faceCount), -1);
+        for (int g = 0; g < groups.Count(); ++g) groupFrom[size_t(groups.Begin(g)[0])] = g;
         edgeOf.assign(3 * size_t(faceCount), -1);
         twin.assign(3 * size_t(faceCount), -1);
         edgeVerts.clear();
         edgeHalf.clear();
         edgeKind.clear();
         vertOnBorder.assign(vertexCount, 0);
-        for (int g : order) {
+        for (const int g : groupFrom) {
+            if (g < 0) continue;
             const int id = int(edgeVerts.size()), n = groups.Size(g), *h = groups.Begin(g);
             const int a = EdgePairing::From(faceVerts, h[0]), b = EdgePairing::To(faceVerts, h[0]);
             edgeVerts.push_back({a, b});
