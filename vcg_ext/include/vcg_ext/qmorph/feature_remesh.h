@@ -118,6 +118,10 @@ public:
                 std::snprintf(step, sizeof step, "collapses (%d%% of the vertices)", int(100 * done));
                 progress(kCollapseStart + done * (kFlipStart - kCollapseStart), step);
             }, threads);
+            // the collapses only flag what they remove: on a scan far finer than L the first round
+            // leaves most slots dead, and every later pass walked them (compaction keeps the live
+            // elements in order, so every index-ordered step makes the same choices)
+            vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
             progress(kFlipStart, "flips");
             st.flips += ValenceFlips<MeshType>::Do(m, surface, kSurfaceDistance * L);
             progress(kRelaxStart, "relaxation");
