@@ -454,10 +454,9 @@ private:
     }
 
     // Selected face-edges and sharp creases (but an unreliable face's): both sides flagged, each entered in
-    // the grid.
+    // the grid. Needs face-face adjacency (ReadCanonically leaves it built).
     static void MarkFeatures(MeshType &m, double creaseAngleDeg, SegmentGrid &grid, std::vector<FeatureKind> &kinds, Stats &st, double L)
     {
-        FaceFaceAdjacency<MeshType>::Update(m);
         const double creaseCos = std::cos(creaseAngleDeg * M_PI / 180);
         const double sharpCos = std::cos(ShortEdgeCollapse<MeshType>::kSharpChainDeg * M_PI / 180);
         for (FaceType &f : m.face)
