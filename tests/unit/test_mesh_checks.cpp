@@ -123,6 +123,28 @@ TEST(MeshChecks, DuplicateFacesAsSortingEveryTripleCountsThem)
     }
 }
 
+TEST(MeshChecks, DuplicateFacesOnAFanOfManyFacesAroundOneEdge)
+{
+    // 20,000 faces on the edge 0-1 (a bad input the filters must refuse with a message, quickly:
+    // faces on one edge are compared by their sorted third vertices, not pair by pair)
+    const int fan = 20000;
+    std::vector<P3> v{P3(0, 0, 0), P3(1, 0, 0)};
+    std::vector<std::array<int, 3>> f;
+    for (int i = 0; i < fan; ++i) {
+        const float a = 6.2831853f * float(i) / float(fan);
+        v.push_back(P3(0.5f, std::cos(a), std::sin(a)));
+        f.push_back({0, 1, i + 2});
+    }
+    f.push_back({1, 0, 7});  // reversed copy
+    f.push_back({7, 0, 1});  // turned copy of the same face: 2 more duplicates of face 5
+    f.push_back({0, 1, fan + 1});
+    TMesh m;
+    Build(m, v, f);
+    const auto r = Checks::Inspect(m);
+    EXPECT_EQ(r.duplicateFaces, 3);
+    EXPECT_EQ(r.nonManifoldEdges, 3);  // 0-1, and 0-7 and 1-7 of the three copies of face 5
+}
+
 TEST(MeshChecks, EmptyAndPointCloud)
 {
     TMesh m;

@@ -182,40 +182,35 @@ public:
     }
 
     // Faces with the same vertex set as an earlier face (in `tris` order). Two such faces share
-    // every edge, so each face is compared only with the faces on the edge between its two lowest
-    // vertices (EdgePairing's groups: two faces on a manifold edge): linear, where sorting millions
-    // of vertex triples took a quarter of the checks (each filter runs them). A face with a repeated
-    // vertex has no such edge: then every triple is sorted, as before.
+    // every edge, so faces are compared only on the edge between their two lowest vertices (one of
+    // EdgePairing's groups, two faces on a manifold edge), by their third vertex: linear, where
+    // sorting millions of vertex triples took a quarter of the checks (each filter runs them). A face
+    // with a repeated vertex has no such edge: then every triple is sorted, as before.
     static int CountDuplicateFaces(const std::vector<std::array<int, 3>> &tris, const EdgePairing::Groups &edges)
     {
-        auto sortedTriple = [&](int f) {
-            std::array<int, 3> t = tris[f];
-            std::sort(t.begin(), t.end());
-            return t;
-        };
         int count = 0;
         for (const std::array<int, 3> &t : tris)
             if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-                std::vector<std::array<int, 3>> sorted(tris.size());
-                for (size_t f = 0; f < tris.size(); ++f) sorted[f] = sortedTriple(int(f));
+                std::vector<std::array<int, 3>> sorted(tris);
+                for (auto &s : sorted) std::sort(s.begin(), s.end());
                 std::sort(sorted.begin(), sorted.end());
                 for (size_t i = 1; i < sorted.size(); ++i)
                     if (sorted[i] == sorted[i - 1]) ++count;
                 return count;
             }
+        std::vector<int> thirds;  // third vertices of the faces whose lowest edge is this one
         for (int e = 0; e < edges.Count(); ++e) {
             const int n = edges.Size(e), *h = edges.Begin(e);
+            if (n < 2) continue;
+            thirds.clear();
             for (int i = 0; i < n; ++i) {
-                const int f = h[i] / 3;
-                const std::array<int, 3> t = sortedTriple(f);
-                const int a = EdgePairing::From(tris, h[i]), b = EdgePairing::To(tris, h[i]);
-                if (std::min(a, b) != t[0] || std::max(a, b) != t[1]) continue;  // not f's lowest edge
-                for (int j = 0; j < n; ++j)
-                    if (h[j] / 3 < f && sortedTriple(h[j] / 3) == t) {
-                        ++count;
-                        break;
-                    }
+                const std::array<int, 3> &t = tris[h[i] / 3];
+                const int k = h[i] % 3, third = t[(k + 2) % 3];
+                if (third > t[k] && third > t[(k + 1) % 3]) thirds.push_back(third);
             }
+            std::sort(thirds.begin(), thirds.end());  // a non-manifold fan stays O(n log n)
+            for (size_t i = 1; i < thirds.size(); ++i)
+                if (thirds[i] == thirds[i - 1]) ++count;
         }
         return count;
     }
