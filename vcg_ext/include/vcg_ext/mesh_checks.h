@@ -177,27 +177,27 @@ public:
                 if (fanOf[v] < 0) { fanOf[v] = root; ++r.referencedVertices; }
                 else if (fanOf[v] != root && !bad[v]) { bad[v] = 1; ++r.nonManifoldVertices; }
             }
-        r.duplicateVertices = CountDuplicateBoundaryVertices(m, fanOf, onBoundary);
+        r.duplicateVertices = r.boundaryEdges ? CountDuplicateBoundaryVertices(m, fanOf, onBoundary) : 0;
         return r;
     }
 
     // Faces with the same vertex set as an earlier face (in `tris` order). Two such faces share
     // every edge, so faces are compared only on the edge between their two lowest vertices (one of
     // EdgePairing's groups, two faces on a manifold edge), by their third vertex: linear, where
-    // sorting millions of vertex triples took a quarter of the checks (each filter runs them). A face
-    // with a repeated vertex has no such edge: then every triple is sorted, as before.
+    // sorting millions of vertex triples took a quarter of the checks (each filter runs them). Faces
+    // with a repeated vertex have no such edge, and only repeat each other: their sorted triples
+    // are compared among themselves.
     static int CountDuplicateFaces(const std::vector<std::array<int, 3>> &tris, const EdgePairing::Groups &edges)
     {
         int count = 0;
-        for (const std::array<int, 3> &t : tris)
-            if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-                std::vector<std::array<int, 3>> sorted(tris);
-                for (auto &s : sorted) std::sort(s.begin(), s.end());
-                std::sort(sorted.begin(), sorted.end());
-                for (size_t i = 1; i < sorted.size(); ++i)
-                    if (sorted[i] == sorted[i - 1]) ++count;
-                return count;
-            }
+        std::vector<std::array<int, 3>> repeating;  // sorted triples of the faces with a repeated vertex
+        for (std::array<int, 3> t : tris) {
+            std::sort(t.begin(), t.end());
+            if (t[0] == t[1] || t[1] == t[2]) repeating.push_back(t);
+        }
+        std::sort(repeating.begin(), repeating.end());
+        for (size_t i = 1; i < repeating.size(); ++i)
+            if (repeating[i] == repeating[i - 1]) ++count;
         std::vector<int> thirds;  // third vertices of the faces whose lowest edge is this one
         for (int e = 0; e < edges.Count(); ++e) {
             const int n = edges.Size(e), *h = edges.Begin(e);
@@ -217,12 +217,11 @@ public:
 
     // Boundary vertices whose position is exactly that of another referenced vertex: vertices that
     // were never merged (a triangle soup, or a surface cut open along a seam). Coincident vertices
-    // away from the boundary (closed parts touching at a point) are not counted, so a closed mesh
-    // has none (and its vertices are not sorted).
+    // away from the boundary (closed parts touching at a point) are not counted: a mesh without
+    // boundary edges has none, and Inspect does not call this (no sort of its vertices).
     static int CountDuplicateBoundaryVertices(const MeshType &m, const std::vector<int> &referenced,
                                               const std::vector<char> &onBoundary)
     {
-        if (std::find(onBoundary.begin(), onBoundary.end(), 1) == onBoundary.end()) return 0;
         std::vector<int> ids;
         for (size_t v = 0; v < m.vert.size(); ++v)
             if (referenced[v] >= 0 && IsFinite(m.vert[v].cP())) ids.push_back(int(v));
