@@ -75,6 +75,8 @@ TEST(ProgressPlugin, EveryFilterReportsOnTheCallingThreadAndWritesTheSameMesh)
             EXPECT_LE(c.percent, 100);
             own += c.message.rfind(prefixes[i], 0) == 0;
         }
+        // reports may be coalesced on a fast machine, but the core's last one always arrives
+        // (every core message carries its stage's prefix for that reason)
         EXPECT_GT(own, 0) << kFilters[i];
     }
 }

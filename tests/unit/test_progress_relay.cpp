@@ -148,9 +148,10 @@ TEST(ProgressRelay, VsaAndQMorphWriteTheSameWithACallbackAndCallItOnTheCallingTh
             continue;
         }
         EXPECT_TRUE(MeshBytes(m) == reference) << "the callback changed the output";
-        ASSERT_GT(g_seen.threads.size(), 10u);
+        // reports may be coalesced (a fast machine can finish a stage between two wake-ups of the
+        // calling thread), but each stage's last one reaches the caller
+        ASSERT_GE(g_seen.threads.size(), 2u);
         for (std::thread::id t : g_seen.threads) EXPECT_EQ(t, std::this_thread::get_id());
-        // reports may be coalesced, but each stage's last one reaches the caller
         int vsa = 0, qmorph = 0;
         for (const std::string &message : g_seen.messages) {
             vsa += message.rfind("VSA:", 0) == 0;

@@ -36,7 +36,7 @@ public:
         StraighteningEngine<MeshType> engine(t, p);
         engine.Load(paths);
         for (int pass = 0; pass < p.iterations; ++pass) {
-            if (cb) cb(progressFrom + (progressTo - progressFrom) * pass / std::max(1, p.iterations), "Straightening region boundaries");
+            if (cb) cb(progressFrom + (progressTo - progressFrom) * pass / std::max(1, p.iterations), "Region boundaries: straightening");
             const double gain = engine.Pass(res);
             ++res.passes;
             if (!(gain > 1e-9 * engine.InitialLength())) { res.converged = true; break; }
