@@ -62,7 +62,7 @@ inline RunResult RunMeshLabServer(const std::string &dir, const std::string &arg
     RunResult r;
     std::string log = dir + "/meshlabserver.log";
     std::string cmd = "cd " + Quote(dir) + " && HOME=" + Quote(dir + "/home") + " DISPLAY=" + Quote(Display()) +
-                      " XDG_RUNTIME_DIR=" + Quote(dir + "/home") + " " + Quote(std::string(QMF_STAGE_DIR) + "/bin/meshlabserver") +
+                      " XDG_RUNTIME_DIR=" + Quote(dir + "/home") + " LC_ALL=C " + Quote(std::string(QMF_STAGE_DIR) + "/bin/meshlabserver") +
                       " " + args + " > " + Quote(log) + " 2>&1";
     int status = std::system(cmd.c_str());
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
