@@ -108,8 +108,9 @@ run_step() {  # run_step N OUTPUT_FILE... -- MESHLABSERVER_ARGS...
   shift
   progress "$n" 0 "running"
   local t0; t0="$(now_ms)"
-  # private HOME: meshlabserver writes its settings there, not into the user's
-  if ! ( cd "$OUT" && HOME="$RUN/home" XDG_RUNTIME_DIR="$RUN/home" "$ML" "$@" ) > "$RUN/step$n.log" 2>&1; then
+  # private HOME: meshlabserver writes its settings there, not into the user's; the C locale:
+  # Qt takes the user's, and a comma-decimal one would change the log figures read below
+  if ! ( cd "$OUT" && HOME="$RUN/home" XDG_RUNTIME_DIR="$RUN/home" LC_ALL=C "$ML" "$@" ) > "$RUN/step$n.log" 2>&1; then
     progress "$n" 0 "FAILED, see $RUN/step$n.log"
     log_lines "$n" >&2
     tail -n 5 "$RUN/step$n.log" >&2

@@ -14,6 +14,8 @@ stop_server() {
   local pid
   pid="$(cat "$dir/xvfb.pid" 2>/dev/null || true)"
   [ -n "$pid" ] || return 0
+  # a pid file left by an aborted run may name a process that has since been reused: only an Xvfb
+  [ "$(cat "/proc/$pid/comm" 2>/dev/null || true)" = "Xvfb" ] || return 0
   kill "$pid" 2>/dev/null || return 0
   for _ in $(seq 1 100); do kill -0 "$pid" 2>/dev/null || return 0; sleep 0.05; done
   kill -9 "$pid" 2>/dev/null || true
@@ -26,7 +28,8 @@ case "$cmd" in
     # setsid: the server outlives this script (CTest waits only for the script)
     setsid Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp -noreset 3>"$dir/xvfb.fd" >"$dir/xvfb.log" 2>&1 < /dev/null &
     echo $! > "$dir/xvfb.pid"
-    for _ in $(seq 1 100); do
+    # up to 30 s (a loaded machine); the loop ends as soon as the display is known
+    for _ in $(seq 1 300); do
       if [ -s "$dir/xvfb.fd" ]; then echo ":$(tr -d '[:space:]' < "$dir/xvfb.fd")" > "$dir/xvfb.display"; break; fi
       sleep 0.1
     done
