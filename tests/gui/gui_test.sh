@@ -86,17 +86,24 @@ echo "window: $win '$(xdotool getwindowname "$win")'"
 sleep 3
 if [ "$INJECT" = crash ]; then  # a loaded machine can take more than a moment to end it
   kill -SEGV "$ML_PID"
-  for _ in $(seq 50); do kill -0 "$ML_PID" 2>/dev/null || break; sleep 0.2; done
+  for _ in $(seq 150); do kill -0 "$ML_PID" 2>/dev/null || break; sleep 0.2; done  # up to 30 s (a core dump)
 fi
 if ! kill -0 "$ML_PID" 2>/dev/null; then
   reap
   fail "meshlab crashed after its window appeared ($(describe "$ML_STATUS")): $(tail -n 5 "$WORK/meshlab.log")"
 fi
+# a loaded machine (ctest -j2 beside the pipelines) can take longer to load and draw: up to 30 s
+for _ in $(seq 150); do grep -q "Opened mesh" "$WORK/meshlab.log" && break; sleep 0.2; done
 grep -q "Opened mesh" "$WORK/meshlab.log" || fail "meshlab did not report opening $MESH: $(tail -n 5 "$WORK/meshlab.log")"
 
-# 4. Screenshot, kept in the build tree; a blank screen has a handful of colours.
-xwd -root -silent | convert xwd:- "$WORK/meshlab_gui.png"
-colours="$(convert "$WORK/meshlab_gui.png" -format '%k' info:)"
+# 4. Screenshot, kept in the build tree; a blank screen has a handful of colours (taken again for
+# up to 30 s while it is: the first frame may still be drawing).
+for _ in $(seq 30); do
+  xwd -root -silent | convert xwd:- "$WORK/meshlab_gui.png"
+  colours="$(convert "$WORK/meshlab_gui.png" -format '%k' info:)"
+  [ "$colours" -gt 100 ] && break
+  sleep 1
+done
 [ "$colours" -gt 100 ] || fail "the screenshot looks blank ($colours colours): $WORK/meshlab_gui.png"
 echo "screenshot: $WORK/meshlab_gui.png ($colours colours)"
 
