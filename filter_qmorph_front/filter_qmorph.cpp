@@ -3,6 +3,7 @@
 
 #include <QFileInfo>
 
+#include "face_face_adjacency_scope.h"
 #include "front_edges_layer.h"
 #include <vcg_ext/common/polygon_export.h>
 #include <vcg_ext/qmorph.h>
@@ -98,11 +99,13 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
     }
 
     // The core checks the mesh and the parameters first and leaves the mesh as it is on error; it
-    // needs face-face adjacency, enabled here and dropped again on error.
-    // (re-meshing: vertex-face adjacency and marks too).
+    // needs the face-face adjacency component, on for the call (the core builds the links before it
+    // reads them), and for re-meshing vertex-face adjacency and marks, enabled here and dropped
+    // again on error.
     const int remeshing = MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK | MeshModel::MM_FACEMARK;
-    const int needed = MeshModel::MM_FACEFACETOPO | (QMorphCMeshO::RemeshLength(mm.cm, p) > 0 ? remeshing : 0);
+    const int needed = QMorphCMeshO::RemeshLength(mm.cm, p) > 0 ? remeshing : 0;
     const int missing = needed & ~mm.dataMask();
+    FaceFaceAdjacencyScope adjacency(mm.cm);
     mm.updateDataMask(needed);
     QMorphCMeshO::Result r = QMorphCMeshO::Apply(mm.cm, p, cb);
     if (!r.error.empty()) {
@@ -110,7 +113,10 @@ bool QMorphFrontPlugin::applyQMorph(MeshDocument &md, const RichParameterList &p
         return fail(name, QString::fromStdString(r.error));
     }
     mm.clearDataMask(missing & remeshing);  // the adjacency is stale after the rewrite
-    mm.updateDataMask(MeshModel::MM_POLYGONAL);
+    // The quad mesh keeps its face-face adjacency, flagged: MeshLab builds it again on the output,
+    // on big scans a fraction of the input.
+    mm.updateDataMask(MeshModel::MM_POLYGONAL | MeshModel::MM_FACEFACETOPO);
+    adjacency.Keep();
     if (mm.hasDataMask(MeshModel::MM_FACEQUALITY) && mm.hasDataMask(MeshModel::MM_FACECOLOR)) {
         std::vector<int> ids;
         if (vcg_ext::RegionIds<CMeshO>::Read(mm.cm, ids).empty()) vcg_ext::RegionIds<CMeshO>::ColorFaces(mm.cm, ids);

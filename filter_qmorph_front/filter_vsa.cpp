@@ -1,6 +1,8 @@
 // Filter 1: Segment by Variational Shape Approximation.
 #include "filter_qmorph_front.h"
 
+#include "face_face_adjacency_scope.h"
+
 #include <vcg_ext/mesh_checks.h>
 #include <vcg_ext/common/region_ids.h>
 #include <vcg_ext/vsa_segmentation.h>
@@ -72,10 +74,15 @@ bool QMorphFrontPlugin::applyVsa(MeshDocument &md, const RichParameterList &par,
     p.maxIterations = par.getInt("MaxIterations");
     p.randomSeed = uint32_t(par.getInt("RandomSeed"));
     // The core checks the mesh and the parameters first and leaves the mesh as it is on error; it
-    // needs face-face adjacency and writes the face quality, enabled here and dropped on error.
-    const int added = (MeshModel::MM_FACEFACETOPO | MeshModel::MM_FACEQUALITY) & ~mm.dataMask();
-    mm.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_FACEQUALITY);
-    VSA::Result r = VSA::Segment(mm.cm, p, cb);
+    // writes the face quality, enabled here and dropped on error, and builds the face-face
+    // adjacency it needs itself (only the component is turned on, for the call).
+    const int added = MeshModel::MM_FACEQUALITY & ~mm.dataMask();
+    mm.updateDataMask(MeshModel::MM_FACEQUALITY);
+    VSA::Result r;
+    {
+        FaceFaceAdjacencyScope adjacency(mm.cm);
+        r = VSA::Segment(mm.cm, p, cb);
+    }
     if (!r.error.empty()) {
         mm.clearDataMask(added);
         return fail(name, QString::fromStdString(r.error));
