@@ -178,6 +178,18 @@ TEST(SmoothPlugin, RefusesNonManifoldEdgesOnABoundary)
     ExpectRefused(h, Defaults(h, kSmooth), "non-manifold edges");
 }
 
+// A problem of the mesh is named before one of its region ids (the filter inspects the mesh only
+// when the region ids fail; Smooth inspects it on the way through). Without any face quality:
+// RefusesEmptyMeshesAndEdgeOnlyLayers.
+TEST(SmoothPlugin, NamesAMeshProblemBeforeARegionIdProblem)
+{
+    PluginHarness h;  // a NaN coordinate and a quality that is no region id
+    MeshModel *mm = AddLabelledCube(h, 2);
+    mm->cm.vert[4].P()[1] = std::numeric_limits<float>::quiet_NaN();
+    mm->cm.face[3].Q() = 1.5f;
+    ExpectRefused(h, Defaults(h, kSmooth), "NaN or infinite");
+}
+
 TEST(SmoothPlugin, RefusesNonFiniteCoordinates)
 {
     for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
