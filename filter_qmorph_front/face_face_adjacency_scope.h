@@ -1,6 +1,6 @@
 // The face-face adjacency component a core needs, turned on without MeshLab's
 // updateDataMask(MM_FACEFACETOPO): that also builds the adjacency with vcglib's
-// UpdateTopology::FaceFace, which sorts a record per face edge (about 1.4 s at 3.3M faces, once per
+// UpdateTopology::FaceFace, which sorts a record per face edge (about a second at 3.3M faces, once per
 // filter), although the cores build their own in linear time (vcg_ext::FaceFaceAdjacency, the same
 // links). The component is on for the scope and off again at its end when it was off before
 // (Keep: stays on); the data-mask bit is left to the caller, so no filter trusts links it did not
